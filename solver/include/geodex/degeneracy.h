@@ -1,0 +1,58 @@
+#pragma once
+// The degenerate cases of Liu, Zhou & Hu 2007, named as in the paper and DESIGN.md, and the
+// counters the solver keeps of them (so the degeneracy rate of the paper's Table 1 can be
+// reported: geometric-intersection cases G1–G5 over all propagation cases).
+
+#include <array>
+#include <cstdint>
+#include <string_view>
+
+namespace geodex {
+
+enum class DegeneracyKind : std::uint8_t {
+  // Geometric intersection (Sect. 3.1, Fig. 4), decided in the order of Fig. 6.
+  G1,  ///< s coincides with b0 or b1: the pseudo-source lies on the line of e0
+  G2,  ///< s, b0, v1 collinear (b0 ≠ v0)
+  G3,  ///< s, b1, v1 collinear (b1 ≠ v2)
+  G4,  ///< s, v0 = b0, v1 collinear
+  G5,  ///< s, v2 = b1, v1 collinear
+  // Geodesic discontinuities (Sect. 3.2), repaired by Algorithm 2 steps 3–5.
+  D1,  ///< tiny interval (step 3 removes it)
+  D2,  ///< consecutive intervals overlap (resolved at the midpoint)
+  D3,  ///< consecutive intervals separated by a tiny gap (step 4 sews it)
+  D4,  ///< distances differ at a shared endpoint after an Eq. 1 split (root polished)
+  kCount
+};
+inline constexpr std::size_t kNumDegeneracyKinds = static_cast<std::size_t>(DegeneracyKind::kCount);
+
+constexpr std::string_view name(DegeneracyKind k) {
+  constexpr std::array<std::string_view, kNumDegeneracyKinds> names{"G1", "G2", "G3", "G4", "G5",
+                                                                   "D1", "D2", "D3", "D4"};
+  return names[static_cast<std::size_t>(k)];
+}
+constexpr bool isGeometric(DegeneracyKind k) { return k <= DegeneracyKind::G5; }
+
+struct DegeneracyCounters {
+  std::array<std::uint64_t, kNumDegeneracyKinds> count{};
+  /// All propagation cases (one window propagated across one face), degenerate or not: the
+  /// denominator of Table 1's degeneracy rate.
+  std::uint64_t cases = 0;
+  /// Mesh-level cases the paper leaves out: windows passed through a zero-area face, and
+  /// windows whose source lies on their own edge's line outside the window (nothing to
+  /// propagate: their rays run along the edge).
+  std::uint64_t zeroAreaFaces = 0;
+  std::uint64_t sourceOnEdgeLineOutside = 0;
+
+  std::uint64_t& operator[](DegeneracyKind k) { return count[static_cast<std::size_t>(k)]; }
+  std::uint64_t operator[](DegeneracyKind k) const { return count[static_cast<std::size_t>(k)]; }
+  std::uint64_t geometricTotal() const { return count[0] + count[1] + count[2] + count[3] + count[4]; }
+  DegeneracyCounters& operator+=(const DegeneracyCounters& o) {
+    for (std::size_t i = 0; i < kNumDegeneracyKinds; ++i) count[i] += o.count[i];
+    cases += o.cases;
+    zeroAreaFaces += o.zeroAreaFaces;
+    sourceOnEdgeLineOutside += o.sourceOnEdgeLineOutside;
+    return *this;
+  }
+};
+
+}  // namespace geodex

@@ -1,0 +1,75 @@
+#pragma once
+// The intervals of one edge and Algorithm 2 of Liu, Zhou & Hu 2007 (Sect. 4.2): merging a new
+// interval into the edge's sorted set so that every point keeps the smaller distance.
+//
+//   step 1  split the old intervals at the new one's ends, so each is wholly inside or outside it
+//   step 2  for each old interval inside the new one, solve Eq. 1 (where the two distance
+//           functions are equal) and keep, on each piece, the one that is shorter
+//   step 3  remove tiny intervals (D1)
+//   step 4  sew small gaps at their midpoint (D3); overlaps (D2) are resolved the same way
+//   step 5  merge neighbours with the same pseudo-source
+//   step 6  verification: done by verify/ through the solver's observer (see observer.h)
+// D4 (the two distances differ at a shared endpoint made by Eq. 1) is repaired in step 2, by
+// polishing the root on the exact difference of the two distance functions.
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "geodex/degeneracy.h"
+#include "geodex/interval.h"
+
+namespace geodex {
+
+/// What one insertion did, for the solver (which intervals to queue) and the observer.
+struct EdgeUpdateReport {
+  /// Ids of unpropagated intervals created or changed by this update: the solver (re)queues them.
+  std::vector<std::uint32_t> toQueue;
+  /// Shared endpoints created by an Eq. 1 split: the two neighbours must agree here (D4).
+  std::vector<double> eq1Breakpoints;
+  /// Whether any part of the incoming interval survived.
+  bool incomingSurvived = false;
+  DegeneracyCounters degeneracies;  ///< D1–D4 found in this update
+  void clear() {
+    toQueue.clear();
+    eq1Breakpoints.clear();
+    incomingSurvived = false;
+    degeneracies = {};
+  }
+};
+
+/// Hands out interval ids unique within a solve.
+struct IntervalIdSource {
+  std::uint32_t next = 1;
+  std::uint32_t operator()() { return next++; }
+};
+
+/// The sorted, non-overlapping intervals of one edge.
+class EdgeIntervals {
+ public:
+  std::span<const Interval> intervals() const { return list_; }
+  bool empty() const { return list_.empty(); }
+  void clear() { list_.clear(); }
+  /// For tests and the fuzzers: install a list as it is (no checks; verify/ judges it).
+  void assign(std::vector<Interval> list) { list_ = std::move(list); }
+  Interval* find(std::uint32_t id);
+
+  /// Algorithm 2: merge `incoming` (range within [0, edgeLength], incoming.id fresh) into the
+  /// list. `scratch` is reused between calls to avoid allocation.
+  void insert(const Interval& incoming, double edgeLength, IntervalIdSource& ids,
+              EdgeUpdateReport& report, std::vector<Interval>& scratch);
+
+  /// The smallest distance the list gives at x, or +inf where no interval covers x.
+  double distanceAt(double x) const;
+
+ private:
+  std::vector<Interval> list_;
+};
+
+/// Eq. 1: positions x in (lo, hi) where the two intervals' distance functions are equal, as
+/// candidates (roots of the quadratic; spurious ones from squaring are possible and harmless).
+/// Returns how many were written to roots (0–2), sorted.
+int equalDistanceCandidates(const Interval& a, const Interval& b, double lo, double hi,
+                            double roots[2]);
+
+}  // namespace geodex

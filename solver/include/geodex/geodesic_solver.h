@@ -1,0 +1,121 @@
+#pragma once
+// Exact geodesic distances and paths on a triangle mesh: MMP window propagation (Surazhsky et al.
+// 2005) with the degenerate cases of Liu, Zhou & Hu 2007 handled by the Fig. 6 decision tree
+// (propagate.h) and Algorithm 2 (edge_intervals.h).
+//
+//   std::vector<double> d = geodex::exactGeodesicDistance(mesh, {SurfacePoint::atVertex(0)});
+//
+//   geodex::GeodesicSolver solver(mesh);
+//   solver.solve({SurfacePoint::atVertex(0), SurfacePoint::inFace(7, 0.2, 0.3, 0.5)});
+//   double d = solver.distance(SurfacePoint::onEdge(3, 4, 0.25));
+//   GeodesicPath p = solver.path(SurfacePoint::atVertex(42));
+
+#include <limits>
+#include <queue>
+#include <span>
+#include <vector>
+
+#include "geodex/degeneracy.h"
+#include "geodex/edge_intervals.h"
+#include "geodex/mesh.h"
+#include "geodex/observer.h"
+#include "geodex/surface_point.h"
+
+namespace geodex {
+
+inline constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+struct SolveOptions {
+  /// Stop once the wavefront has passed this distance. Every vertex within it gets its exact
+  /// distance; every vertex beyond it gets +inf.
+  double stopDistance = kInfinity;
+  /// Stop as soon as the distance of every target is final (the wavefront has passed the
+  /// largest of them). Vertices whose distance is not final at that point get +inf.
+  /// With both options set, the solve stops at whichever comes first.
+  std::vector<SurfacePoint> targets;
+};
+
+struct SolveStats {
+  std::uint64_t intervalsCreated = 0;    ///< intervals handed to Algorithm 2
+  std::uint64_t intervalsPropagated = 0; ///< windows popped and propagated across a face
+  std::uint64_t pseudoSourceEvents = 0;  ///< saddle/boundary vertices turned into pseudo-sources
+  std::uint64_t maxIntervalsPerEdge = 0;
+  std::uint64_t intervalsAtEnd = 0;
+  double radius = kInfinity;             ///< distances up to this are final (inf: ran to the end)
+};
+
+/// One point of a geodesic path.
+struct PathPoint {
+  SurfacePoint where;  ///< vertex, or edge point (`vertex` → `toVertex` at fraction t), or face
+  Vec3 position;
+};
+
+struct GeodesicPath {
+  std::vector<PathPoint> points;  ///< from the target back to the nearest source
+  double length = kInfinity;      ///< sum of segment lengths; equals the distance
+};
+
+class GeodesicSolver {
+ public:
+  explicit GeodesicSolver(const Mesh& mesh);
+
+  /// Attach an observer (verify/ uses this); nullptr detaches. Not owned.
+  void setObserver(SolverObserver* observer) { observer_ = observer; }
+
+  /// Computes distances from all `sources` (any number; each a vertex, edge point or face point).
+  /// Re-running with other sources gives the same results as a fresh solver.
+  /// Throws InputError for a source or target outside the mesh.
+  void solve(std::span<const SurfacePoint> sources, const SolveOptions& options = {});
+
+  /// Per-vertex distances (+inf for unreachable, unreferenced, or beyond a stop), #V entries.
+  std::span<const double> vertexDistances() const { return vertexDistance_; }
+  /// Distance at any surface point.
+  double distance(const SurfacePoint& p) const;
+  /// The geodesic from p back to the nearest source. Empty with length +inf if unreachable.
+  GeodesicPath path(const SurfacePoint& p) const;
+
+  const DegeneracyCounters& counters() const { return counters_; }
+  const SolveStats& stats() const { return stats_; }
+  const Mesh& mesh() const { return mesh_; }
+  std::span<const EdgeIntervals> edgeIntervals() const { return edges_; }
+  std::span<const ResolvedPoint> sources() const { return sources_; }
+
+ private:
+  struct QueueEntry {
+    double key;
+    Index edge;  ///< kNoIndex: a pseudo-source event of vertex `id`
+    std::uint32_t id;
+    bool operator>(const QueueEntry& o) const { return key > o.key; }
+  };
+
+  void reset();
+  void seedSource(const ResolvedPoint& p, std::size_t number);
+  void addInterval(Index edge, const Interval& w, const Fig6Branch* branch);
+  void pushInterval(Index edge, const Interval& w);
+  void updateVertex(Index v, double d);
+  void createPseudoSourceWindows(Index v, double sigma, std::int32_t origin);
+  void propagate(Index edge, const Interval& w);
+  double distanceToVertexSet(Index v) const;
+  void finish(const SolveOptions& options, double radius);
+  double targetsMaxDistance(std::span<const ResolvedPoint> targets) const;
+  double resolvedDistance(const ResolvedPoint& p) const;
+
+  const Mesh& mesh_;
+  SolverObserver* observer_ = nullptr;
+  std::vector<EdgeIntervals> edges_;
+  std::vector<double> vertexDistance_;
+  std::vector<double> vertexQueued_;  ///< distance of the vertex's pending pseudo-source event
+  std::vector<ResolvedPoint> sources_;
+  std::priority_queue<QueueEntry, std::vector<QueueEntry>, std::greater<>> queue_;
+  IntervalIdSource ids_;
+  EdgeUpdateReport report_;
+  std::vector<Interval> scratch_, before_;
+  DegeneracyCounters counters_;
+  SolveStats stats_;
+};
+
+/// One call: distances from `sources` to every vertex of `mesh` (+inf where unreachable).
+std::vector<double> exactGeodesicDistance(const Mesh& mesh, std::span<const SurfacePoint> sources,
+                                          const SolveOptions& options = {});
+
+}  // namespace geodex

@@ -1,0 +1,47 @@
+#pragma once
+// The narrow interface through which verify/ watches the solver: the solver calls the observer at
+// every propagation case, every edge update and at the end. With no observer attached the solver
+// skips building these events; the only cost is one predictable branch per update (measured in
+// bench/ and reported in the README).
+
+#include <span>
+
+#include "geodex/degeneracy.h"
+#include "geodex/edge_intervals.h"
+#include "geodex/interval.h"
+#include "geodex/propagate.h"
+
+namespace geodex {
+
+class GeodesicSolver;
+
+struct PropagationEvent {
+  Index face;                    ///< the face crossed
+  Index edge;                    ///< e0, the window's edge
+  const Interval& window;        ///< the window propagated
+  const LocalWindow& local;      ///< its local configuration (Fig. 3 frame)
+  const LocalPropagation& result;  ///< the Fig. 6 leaf and the children's ranges
+};
+
+struct EdgeUpdateEvent {
+  Index edge;
+  double edgeLength;
+  std::span<const Interval> before;  ///< the edge's list before Algorithm 2
+  const Interval& incoming;          ///< the new interval
+  std::span<const Interval> after;   ///< the list after steps 1–5
+  const EdgeUpdateReport& report;    ///< Eq. 1 breakpoints, D1–D4 found
+  /// The Fig. 6 leaf that produced the incoming interval (nullptr for source/pseudo-source
+  /// intervals, which come from no propagation case).
+  const Fig6Branch* branch;
+};
+
+class SolverObserver {
+ public:
+  virtual ~SolverObserver() = default;
+  virtual void onPropagation(const PropagationEvent&) {}
+  virtual void onEdgeUpdate(const EdgeUpdateEvent&) {}
+  /// After the wavefront is exhausted (or stopped); the solver's results are queryable.
+  virtual void onFinish(const GeodesicSolver&) {}
+};
+
+}  // namespace geodex

@@ -1,0 +1,61 @@
+#pragma once
+// Every tolerance geodex uses, in one place. Each is *relative*: to an edge length, a face's
+// longest edge, or a distance value, so that scaling a mesh by 1e-6 or 1e+6 makes the same
+// decisions (tests/property checks this). The paper (Liu, Zhou & Hu 2007, Sect. 4.1) uses an
+// absolute "machine precision" ε; that breaks under scaling, hence the local lengths here.
+
+namespace geodex::tol {
+
+// ===  Geometric-intersection predicates (Sect. 4.1, Fig. 6) =====================================
+
+/// Two points coincide when closer than this × the face's longest edge (G1, G4, G5: s = b0,
+/// s = b1, b0 = v0, b1 = v2). Unfolded sources carry ~1e-14 relative error after a few hundred
+/// unfoldings; 1e-11 leaves a margin of 1000 while an error of this size changes a distance by
+/// at most twice as much (triangle inequality), far below the 1e-9 × diagonal accuracy target.
+inline constexpr double kCoincideRel = 1e-11;
+
+/// Three points are collinear when the sine of the angle they make is below this (G2, G3 and
+/// the left/right tests of Fig. 6). Using a sine (cross product over the product of lengths)
+/// makes the test independent of scale and of how far away the pseudo-source is.
+inline constexpr double kCollinearSin = 1e-11;
+
+/// A face whose height over its longest edge is below this is treated as zero-area: windows pass
+/// straight through it along the common line (the limit of the general case as the height → 0).
+inline constexpr double kFlatFaceRel = 1e-12;
+
+// ===  Geodesic discontinuities (Sect. 3.2 and 4.2, Algorithm 2 steps 3–5) =====================
+
+/// D1: intervals shorter than this × edge length are removed (merged into a neighbour).
+/// D3: gaps shorter than this × edge length are sewn at their midpoint.
+/// D2: overlaps up to this × edge length are resolved at their midpoint; larger ones are bugs.
+inline constexpr double kTinyIntervalRel = 1e-11;
+
+/// Step 5: two neighbouring intervals have the same pseudo-source when the unfolded sources are
+/// closer than this × edge length and their σ differ by less than this × edge length.
+inline constexpr double kSameSourceRel = 1e-11;
+
+/// D4: the distances of two neighbours at their shared endpoint must agree to this × the
+/// distance there (plus the edge-length term below) after an Eq. 1 split; a larger mismatch
+/// means the quadratic's root was inaccurate (near-double root) and is polished on the exact
+/// difference function.
+inline constexpr double kContinuityRel = 1e-10;
+
+/// A new interval replaces an old one only where it is shorter by more than this × the distance.
+/// Without it, the same geodesic reached along two unfoldings (equal up to rounding) would keep
+/// replacing itself, fragmenting edges and re-propagating for nothing. Losing at most this much
+/// per decision keeps results within 1e-12 relative even along long chains of ties.
+inline constexpr double kTieRel = 1e-14;
+
+// ===  Mesh-level ================================================================================
+
+/// A vertex is a pseudo-source (Sect. 2: geodesics may pass through it) when it is on the
+/// boundary or its angle sum is at least 2π − this. Erring towards "saddle" is always safe (a
+/// pseudo-source only adds valid candidate paths); erring the other way would leave a shadow
+/// wedge uncovered. Angle sums from atan2 are accurate to ~1e-15, so flat vertices count.
+inline constexpr double kSaddleAngle = 1e-9;
+
+/// Barycentric or edge parameters within this of 0 or 1 snap a source or target onto the
+/// edge or vertex it is on.
+inline constexpr double kSnapParam = 1e-12;
+
+}  // namespace geodex::tol
