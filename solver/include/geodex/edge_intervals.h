@@ -23,7 +23,7 @@ namespace geodex {
 
 /// What one insertion did, for the solver (which intervals to queue) and the observer.
 struct EdgeUpdateReport {
-  /// Ids of unpropagated intervals created or changed by this update: the solver (re)queues them.
+  /// Ids of intervals with an unpropagated part whose queue key changed: the solver (re)queues them.
   std::vector<std::uint32_t> toQueue;
   /// Shared endpoints created by an Eq. 1 split: the two neighbours must agree here (D4).
   std::vector<double> eq1Breakpoints;

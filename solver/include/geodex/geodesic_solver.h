@@ -95,7 +95,6 @@ class GeodesicSolver {
   void updateVertex(Index v, double d);
   void createPseudoSourceWindows(Index v, double sigma, std::int32_t origin);
   void propagate(Index edge, const Interval& w);
-  double distanceToVertexSet(Index v) const;
   void finish(const SolveOptions& options, double radius);
   double targetsMaxDistance(std::span<const ResolvedPoint> targets) const;
   double resolvedDistance(const ResolvedPoint& p) const;
@@ -104,7 +103,6 @@ class GeodesicSolver {
   SolverObserver* observer_ = nullptr;
   std::vector<EdgeIntervals> edges_;
   std::vector<double> vertexDistance_;
-  std::vector<double> vertexQueued_;  ///< distance of the vertex's pending pseudo-source event
   std::vector<ResolvedPoint> sources_;
   std::priority_queue<QueueEntry, std::vector<QueueEntry>, std::greater<>> queue_;
   IntervalIdSource ids_;

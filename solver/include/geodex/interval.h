@@ -20,16 +20,32 @@ struct Interval {
   Vec2 source{0.0, 0.0};  ///< unfolded pseudo-source (x along the edge, y >= 0 height)
   double sigma = 0.0;     ///< σ: geodesic length from the real source to the pseudo-source
   /// τ: the source lies on the side of edge.face[side]; the interval propagates into
-  /// edge.face[1 - side]. (A source on the edge line, y == 0, propagates nowhere by itself:
-  /// such intervals are created already propagated, see GeodesicSolver.)
+  /// edge.face[1 - side].
   std::uint8_t side = 0;
-  /// True once the interval has been propagated across its face (or needs no propagation).
-  bool propagated = false;
   /// What the pseudo-source is, for path tracing: >= 0 a mesh vertex (a saddle or boundary
   /// vertex, or a source vertex), < 0 the real source number -(origin + 1).
   std::int32_t origin = -1;
   /// Unique within one solve; identifies the interval in the priority queue.
   std::uint32_t id = 0;
+  /// The part of [b0, b1] already propagated across the face (empty when pb0 > pb1). Algorithm 2
+  /// may grow an interval (step 3 merges a tiny neighbour in, step 4 sews a gap, step 5 merges a
+  /// neighbour with the same source); only the grown part then needs propagating, so growth
+  /// never re-propagates what was done.
+  double pb0 = std::numeric_limits<double>::infinity();
+  double pb1 = -std::numeric_limits<double>::infinity();
+  /// Key of this interval's latest priority-queue entry (the solver's bookkeeping; -1: none).
+  double queuedKey = -1.0;
+
+  bool fullyPropagated() const { return pb0 <= b0 && pb1 >= b1; }
+  bool nothingPropagated() const { return pb0 > pb1 || pb1 <= b0 || pb0 >= b1; }
+  void markPropagated() {
+    pb0 = b0;
+    pb1 = b1;
+  }
+  void markUnpropagated() {
+    pb0 = std::numeric_limits<double>::infinity();
+    pb1 = -std::numeric_limits<double>::infinity();
+  }
 
   double distanceAt(double x) const {
     const double dx = x - source.x();

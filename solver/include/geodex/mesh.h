@@ -7,6 +7,7 @@
 // apex above the edge, so faces with inconsistent orientation are handled as they are.
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <array>
 #include <cstdint>
 #include <span>

@@ -1,0 +1,325 @@
+#include "geodex/edge_intervals.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "geodex/check.h"
+#include "geodex/tolerance.h"
+
+namespace geodex {
+namespace {
+
+bool sameSource(const Interval& p, const Interval& q, double edgeLength) {
+  const double tol = tol::kSameSourceRel * edgeLength;
+  return p.side == q.side && std::abs(p.sigma - q.sigma) <= tol &&
+         (p.source - q.source).squaredNorm() <= tol * tol;
+}
+
+// The incoming interval is shorter at x by more than the tie tolerance.
+bool incomingWins(const Interval& incoming, const Interval& old, double x) {
+  const double g = old.distanceAt(x);
+  return incoming.distanceAt(x) < g - tol::kTieRel * g;
+}
+
+// Intersection of two propagated sub-ranges, used when an interval is cut to [lo, hi].
+void clipPropagated(Interval& piece) {
+  if (piece.pb0 < piece.b0) piece.pb0 = piece.b0;
+  if (piece.pb1 > piece.b1) piece.pb1 = piece.b1;
+}
+
+}  // namespace
+
+Interval* EdgeIntervals::find(std::uint32_t id) {
+  for (Interval& w : list_)
+    if (w.id == id) return &w;
+  return nullptr;
+}
+
+double EdgeIntervals::distanceAt(double x) const {
+  double best = std::numeric_limits<double>::infinity();
+  for (const Interval& w : list_) {
+    if (x < w.b0) break;
+    if (x <= w.b1) best = std::min(best, w.distanceAt(x));
+  }
+  return best;
+}
+
+// ===  Eq. 1 ======================================================================================
+// σa + |x − sa| = σb + |x − sb| for x on the edge line. With c = σb − σa, squaring twice gives
+// A x² + B x + C = 0. Coordinates are shifted to the middle of [lo, hi] first, so that the
+// squares stay of the size of the configuration rather than of the edge's distance to the origin.
+int equalDistanceCandidates(const Interval& a, const Interval& b, double lo, double hi,
+                            double roots[2]) {
+  const double m = 0.5 * (lo + hi);
+  const double half = 0.5 * (hi - lo);
+  const double x1 = a.source.x() - m, y1 = a.source.y();
+  const double x2 = b.source.x() - m, y2 = b.source.y();
+  const double c = b.sigma - a.sigma;
+  const double alpha = 2.0 * (x2 - x1);
+  const double beta = x1 * x1 + y1 * y1 - x2 * x2 - y2 * y2 - c * c;
+  const double A = alpha * alpha - 4.0 * c * c;
+  const double B = 2.0 * alpha * beta + 8.0 * c * c * x2;
+  const double C = beta * beta - 4.0 * c * c * (x2 * x2 + y2 * y2);
+
+  double r[2];
+  int n = 0;
+  const double linearScale = std::abs(B) * half + std::abs(C);
+  if (std::abs(A) * half * half <= 1e-14 * linearScale) {
+    if (B != 0.0) r[n++] = -C / B;
+  } else {
+    double disc = B * B - 4.0 * A * C;
+    if (disc < 0.0 && disc > -1e-12 * B * B) disc = 0.0;  // a double root (tangent functions)
+    if (disc >= 0.0) {
+      const double q = -0.5 * (B + std::copysign(std::sqrt(disc), B));
+      r[n++] = q / A;
+      if (q != 0.0) r[n++] = C / q;
+    }
+  }
+  int kept = 0;
+  for (int i = 0; i < n; ++i) {
+    const double x = r[i] + m;
+    if (std::isfinite(x) && x > lo && x < hi) roots[kept++] = x;
+  }
+  if (kept == 2 && roots[0] > roots[1]) std::swap(roots[0], roots[1]);
+  return kept;
+}
+
+// ===  Algorithm 2 ================================================================================
+void EdgeIntervals::insert(const Interval& incoming, double edgeLength, IntervalIdSource& ids,
+                           EdgeUpdateReport& report, std::vector<Interval>& out) {
+  GEODEX_CHECK(incoming.b0 >= 0.0 && incoming.b1 <= edgeLength && incoming.b0 < incoming.b1,
+               "incoming interval [" << incoming.b0 << ", " << incoming.b1 << "] not inside [0, "
+                                     << edgeLength << "]");
+  report.clear();
+  const double tiny = tol::kTinyIntervalRel * edgeLength;
+  Interval in = incoming;
+  bool incomingIdUsed = false;
+  auto newPiece = [&](double lo, double hi) {
+    Interval w = in;
+    w.b0 = lo;
+    w.b1 = hi;
+    clipPropagated(w);
+    w.queuedKey = -1.0;
+    if (incomingIdUsed) w.id = ids();
+    incomingIdUsed = true;
+    return w;
+  };
+
+  // --- Step 1: split the old intervals at the new one's ends, so each is wholly inside or
+  //     outside it. An overlap shorter than ε is not split off: it is a D2 degeneracy (two
+  //     intervals intersecting by a rounding error), resolved by meeting at the overlap's midpoint.
+  out.clear();
+  {
+    std::vector<Interval>& split = out;
+    for (const Interval& oldInterval : list_) {
+      Interval w = oldInterval;
+      if (w.b1 <= in.b0 || w.b0 >= in.b1) {
+        split.push_back(w);
+        continue;
+      }
+      if (w.b0 < in.b0 && w.b1 - in.b0 < tiny && w.b1 < in.b1) {  // D2 at the new one's start
+        ++report.degeneracies[DegeneracyKind::D2];
+        const double mid = 0.5 * (in.b0 + w.b1);
+        w.b1 = mid;
+        in.b0 = mid;
+        clipPropagated(w);
+        split.push_back(w);
+        continue;
+      }
+      if (w.b1 > in.b1 && in.b1 - w.b0 < tiny && w.b0 > in.b0) {  // D2 at the new one's end
+        ++report.degeneracies[DegeneracyKind::D2];
+        const double mid = 0.5 * (in.b1 + w.b0);
+        w.b0 = mid;
+        in.b1 = mid;
+        clipPropagated(w);
+        split.push_back(w);
+        continue;
+      }
+      if (w.b0 < in.b0) {  // 1.3: separate at interb0
+        Interval left = w;
+        left.b1 = in.b0;
+        clipPropagated(left);
+        split.push_back(left);
+        w.b0 = in.b0;
+        w.id = ids();
+        w.queuedKey = -1.0;
+      }
+      Interval right = w;
+      const bool hasRight = w.b1 > in.b1;
+      if (hasRight) {  // 1.4: separate at interb1
+        w.b1 = in.b1;
+        right.b0 = in.b1;
+        right.id = ids();
+        right.queuedKey = -1.0;
+        clipPropagated(right);
+      }
+      clipPropagated(w);
+      split.push_back(w);
+      if (hasRight) split.push_back(right);
+    }
+  }
+  // --- Step 2: for each old interval inside the new one, keep on each piece the shorter of the
+  //     two; the new interval fills what no old interval covered. (A D2 repair may have
+  //     consumed the whole, tiny, incoming interval: then there is nothing to compare.)
+  if (in.b1 <= in.b0) {
+    list_.swap(out);
+    out.clear();
+  } else {
+    // Move the split list aside; rebuild `list_` as the merged result.
+    list_.swap(out);
+    out.clear();
+    std::size_t i = 0;
+    for (; i < list_.size() && list_[i].b1 <= in.b0; ++i) out.push_back(list_[i]);
+    double cursor = in.b0;
+    for (; i < list_.size() && list_[i].b0 < in.b1; ++i) {
+      const Interval& old = list_[i];
+      if (old.b0 > cursor) out.push_back(newPiece(cursor, old.b0));  // a gap: the new one's
+      cursor = old.b1;
+      if (sameSource(in, old, edgeLength)) {  // the same geodesic arriving again: keep the old
+        out.push_back(old);
+        continue;
+      }
+      double bp[4];
+      int n = 0;
+      bp[n++] = old.b0;
+      n += equalDistanceCandidates(in, old, old.b0, old.b1, bp + 1);
+      bp[n++] = old.b1;
+      bool wins[3];
+      for (int k = 0; k + 1 < n; ++k) wins[k] = incomingWins(in, old, 0.5 * (bp[k] + bp[k + 1]));
+      // Collapse runs with the same winner; polish each remaining breakpoint (D4).
+      double cut[4];
+      bool cutWins[3];
+      int m = 0;
+      cut[m] = bp[0];
+      cutWins[m] = wins[0];
+      for (int k = 1; k + 1 < n; ++k) {
+        if (wins[k] == cutWins[m]) continue;
+        double x = bp[k];
+        const double f = in.distanceAt(x), g = old.distanceAt(x);
+        if (std::abs(f - g) > tol::kContinuityRel * (g + edgeLength)) {
+          // D4: the quadratic's root is off (a near-double root). Bisect the winner predicate
+          // between the neighbouring sub-range midpoints, where it is known to differ.
+          ++report.degeneracies[DegeneracyKind::D4];
+          double lo = 0.5 * (bp[k - 1] + bp[k]), hi = 0.5 * (bp[k] + bp[k + 1]);
+          const bool loWins = wins[k - 1];
+          for (int it = 0; it < 100 && hi - lo > tiny * 1e-3; ++it) {
+            const double mid = 0.5 * (lo + hi);
+            (incomingWins(in, old, mid) == loWins ? lo : hi) = mid;
+          }
+          x = 0.5 * (lo + hi);
+        }
+        report.eq1Breakpoints.push_back(x);
+        cut[++m] = x;
+        cutWins[m] = wins[k];
+      }
+      cut[++m] = bp[n - 1];
+      bool oldIdUsed = false;
+      for (int k = 0; k < m; ++k) {
+        if (cutWins[k]) {
+          out.push_back(newPiece(cut[k], cut[k + 1]));
+        } else {
+          Interval w = old;
+          w.b0 = cut[k];
+          w.b1 = cut[k + 1];
+          clipPropagated(w);
+          if (oldIdUsed) {
+            w.id = ids();
+            w.queuedKey = -1.0;
+          }
+          oldIdUsed = true;
+          out.push_back(w);
+        }
+      }
+    }
+    if (cursor < in.b1) out.push_back(newPiece(cursor, in.b1));
+    for (; i < list_.size(); ++i) out.push_back(list_[i]);
+    report.incomingSurvived = incomingIdUsed;
+    list_.swap(out);
+    out.clear();
+  }
+
+  std::vector<Interval>& L = list_;
+
+  // --- Step 3: remove tiny intervals (D1), merging each into a neighbour that touches it. The
+  //     grown neighbour keeps its propagated range, so the tiny part still gets propagated.
+  {
+    std::size_t w = 0;
+    for (std::size_t r = 0; r < L.size(); ++r) {
+      if (L[r].length() >= tiny) {
+        L[w++] = L[r];
+        continue;
+      }
+      ++report.degeneracies[DegeneracyKind::D1];
+      const Interval& t = L[r];
+      if (w > 0 && L[w - 1].b1 >= t.b0 - tiny) {
+        Interval& prev = L[w - 1];
+        if (t.fullyPropagated() && prev.pb1 >= prev.b1 && !prev.nothingPropagated()) prev.pb1 = t.b1;
+        prev.b1 = std::max(prev.b1, t.b1);
+      } else if (r + 1 < L.size() && L[r + 1].b0 <= t.b1 + tiny) {
+        Interval& next = L[r + 1];
+        if (t.fullyPropagated() && next.pb0 <= next.b0 && !next.nothingPropagated()) next.pb0 = t.b0;
+        next.b0 = std::min(next.b0, t.b0);
+      }
+    }
+    L.resize(w);
+  }
+
+  // --- Step 4: sew gaps shorter than ε at their midpoint (D3); an overlap left here (D2) is
+  //     resolved the same way. The edge's ends count as neighbours.
+  if (!L.empty()) {
+    if (L.front().b0 > 0.0 && L.front().b0 < tiny) {
+      ++report.degeneracies[DegeneracyKind::D3];
+      L.front().b0 = 0.0;
+    }
+    if (L.back().b1 < edgeLength && edgeLength - L.back().b1 < tiny) {
+      ++report.degeneracies[DegeneracyKind::D3];
+      L.back().b1 = edgeLength;
+    }
+    for (std::size_t k = 0; k + 1 < L.size(); ++k) {
+      const double gap = L[k + 1].b0 - L[k].b1;
+      if (gap == 0.0 || gap >= tiny) continue;
+      ++report.degeneracies[gap > 0.0 ? DegeneracyKind::D3 : DegeneracyKind::D2];
+      const double mid = 0.5 * (L[k].b1 + L[k + 1].b0);
+      L[k].b1 = mid;
+      L[k + 1].b0 = mid;
+      clipPropagated(L[k]);
+      clipPropagated(L[k + 1]);
+    }
+  }
+
+  // --- Step 5: merge neighbours with the same pseudo-source.
+  {
+    std::size_t w = 0;
+    for (std::size_t r = 0; r < L.size(); ++r) {
+      if (w > 0 && L[w - 1].b1 == L[r].b0 && sameSource(L[w - 1], L[r], edgeLength)) {
+        Interval& p = L[w - 1];
+        const Interval& q = L[r];
+        const bool pReachesEnd = !p.nothingPropagated() && p.pb1 >= p.b1;
+        const bool qReachesStart = !q.nothingPropagated() && q.pb0 <= q.b0;
+        if (pReachesEnd && qReachesStart) {
+          p.pb1 = q.pb1;
+        } else if (!q.nothingPropagated() &&
+                   (p.nothingPropagated() || q.pb1 - q.pb0 > p.pb1 - p.pb0)) {
+          p.pb0 = q.pb0;
+          p.pb1 = q.pb1;
+        }
+        p.b1 = q.b1;
+        if (p.id == incoming.id || q.id == incoming.id) report.incomingSurvived = true;
+        continue;
+      }
+      L[w++] = L[r];
+    }
+    L.resize(w);
+  }
+
+  for (Interval& w : L) {
+    if (w.fullyPropagated()) continue;
+    if (w.queuedKey != w.minDistance()) report.toQueue.push_back(w.id);
+  }
+  if (!report.incomingSurvived) {
+    for (const Interval& w : L)
+      if (w.id == incoming.id) report.incomingSurvived = true;
+  }
+}
+
+}  // namespace geodex

@@ -1,0 +1,356 @@
+#include "geodex/geodesic_solver.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "geodex/check.h"
+#include "geodex/error.h"
+#include "geodex/predicates.h"
+#include "geodex/tolerance.h"
+
+namespace geodex {
+namespace {
+
+// The window an edge gets from a source point P lying in the plane of face f (P inside f or on
+// its boundary): the whole edge, with P expressed in the edge's frame on f's side.
+Interval windowFromPoint(const Mesh& mesh, Index f, Index e, const Vec3& P, double sigma,
+                         std::int32_t origin) {
+  const Edge& E = mesh.edge(e);
+  const Vec3 o = mesh.position(E.vertex[0]);
+  const Vec3 dir = (mesh.position(E.vertex[1]) - o) / E.length;
+  const Vec3 rel = P - o;
+  Interval w;
+  w.b0 = 0.0;
+  w.b1 = E.length;
+  w.source = Vec2(rel.dot(dir), rel.cross(dir).norm());
+  w.sigma = sigma;
+  w.side = static_cast<std::uint8_t>(mesh.sideOf(e, f));
+  w.origin = origin;
+  return w;
+}
+
+}  // namespace
+
+GeodesicSolver::GeodesicSolver(const Mesh& mesh) : mesh_(mesh) {}
+
+void GeodesicSolver::reset() {
+  edges_.assign(mesh_.numEdges(), EdgeIntervals{});
+  vertexDistance_.assign(mesh_.numVertices(), kInfinity);
+  sources_.clear();
+  queue_ = {};
+  ids_ = {};
+  counters_ = {};
+  stats_ = {};
+}
+
+// ===  Solve ======================================================================================
+void GeodesicSolver::solve(std::span<const SurfacePoint> sources, const SolveOptions& options) {
+  GEODEX_REQUIRE(!std::isnan(options.stopDistance), "stop distance is NaN");
+  std::vector<ResolvedPoint> resolvedSources, targets;
+  for (const SurfacePoint& p : sources) resolvedSources.push_back(resolve(mesh_, p));
+  for (const SurfacePoint& p : options.targets) targets.push_back(resolve(mesh_, p));
+
+  reset();
+  sources_ = std::move(resolvedSources);
+  for (std::size_t i = 0; i < sources_.size(); ++i) seedSource(sources_[i], i);
+
+  double radius = kInfinity;
+  std::uint64_t pops = 0;
+  double targetBound = targets.empty() ? -1.0 : kInfinity;
+  while (!queue_.empty()) {
+    const QueueEntry top = queue_.top();
+    if (top.key > options.stopDistance) {
+      radius = options.stopDistance;
+      break;
+    }
+    if (!targets.empty()) {
+      // Distances only decrease, so a bound computed earlier stays an upper bound.
+      if ((pops & 255) == 0 || top.key >= targetBound) targetBound = targetsMaxDistance(targets);
+      if (top.key >= targetBound) {
+        radius = top.key;
+        break;
+      }
+    }
+    queue_.pop();
+    ++pops;
+    if (top.edge == kNoIndex) {  // a pseudo-source event; stale if the vertex improved since
+      if (top.key == vertexDistance_[top.id]) {
+        createPseudoSourceWindows(top.id, top.key, static_cast<std::int32_t>(top.id));
+      }
+      continue;
+    }
+    Interval* w = edges_[top.edge].find(top.id);
+    if (w == nullptr || w->fullyPropagated() || w->queuedKey != top.key) continue;
+    const Interval window = *w;
+    w->markPropagated();
+    w->queuedKey = -1.0;
+    propagate(top.edge, window);
+  }
+  finish(options, radius);
+}
+
+void GeodesicSolver::seedSource(const ResolvedPoint& p, std::size_t number) {
+  const std::int32_t origin = sourceOrigin(number);
+  switch (p.kind) {
+    case SurfacePoint::Kind::Vertex:
+      if (!mesh_.isReferenced(p.element)) {
+        vertexDistance_[p.element] = 0.0;  // an isolated point: distance 0 to itself only
+        return;
+      }
+      vertexDistance_[p.element] = 0.0;
+      createPseudoSourceWindows(p.element, 0.0, origin);
+      return;
+    case SurfacePoint::Kind::Edge: {
+      const Edge& E = mesh_.edge(p.element);
+      // The edge itself: the source on its line (G1), whose rays into either face are exactly
+      // the windows made below, so it is created already propagated.
+      Interval own;
+      own.b0 = 0.0;
+      own.b1 = E.length;
+      own.source = Vec2(p.t, 0.0);
+      own.origin = origin;
+      own.id = ids_();
+      own.markPropagated();
+      addInterval(p.element, own, nullptr);
+      for (Index f : E.face) {
+        if (f == kNoIndex) continue;
+        for (Index e : mesh_.faceEdges(f)) {
+          if (e == p.element) continue;
+          Interval w = windowFromPoint(mesh_, f, e, p.position, 0.0, origin);
+          w.id = ids_();
+          if (mesh_.edge(e).face[1 - w.side] == kNoIndex) w.markPropagated();
+          addInterval(e, w, nullptr);
+        }
+      }
+      return;
+    }
+    case SurfacePoint::Kind::Face:
+      for (Index e : mesh_.faceEdges(p.element)) {
+        Interval w = windowFromPoint(mesh_, p.element, e, p.position, 0.0, origin);
+        w.id = ids_();
+        if (mesh_.edge(e).face[1 - w.side] == kNoIndex) w.markPropagated();
+        addInterval(e, w, nullptr);
+      }
+      return;
+  }
+}
+
+// A saddle, boundary or source vertex v at distance sigma becomes a pseudo-source: every edge
+// opposite v in a face around v gets a whole-edge window from v (Fig. 3c's additional intervals,
+// for all faces at once), and every edge incident to v one from v on its own line (G1; already
+// propagated, since its rays into either face are the opposite-edge windows).
+void GeodesicSolver::createPseudoSourceWindows(Index v, double sigma, std::int32_t origin) {
+  ++stats_.pseudoSourceEvents;
+  for (Index f : mesh_.vertexFaces(v)) {
+    const auto& corners = mesh_.face(f);
+    const int k = corners[0] == v ? 0 : (corners[1] == v ? 1 : 2);
+    const FaceFrame& fr = mesh_.frameByLocal(f, (k + 1) % 3);
+    Interval w;
+    w.b0 = 0.0;
+    w.b1 = mesh_.edge(fr.edge).length;
+    w.source = fr.apexPos;
+    w.sigma = sigma;
+    w.side = static_cast<std::uint8_t>(mesh_.sideOf(fr.edge, f));
+    w.origin = origin;
+    w.id = ids_();
+    if (mesh_.edge(fr.edge).face[1 - w.side] == kNoIndex) w.markPropagated();
+    addInterval(fr.edge, w, nullptr);
+  }
+  for (Index e : mesh_.vertexEdges(v)) {
+    const Edge& E = mesh_.edge(e);
+    Interval w;
+    w.b0 = 0.0;
+    w.b1 = E.length;
+    w.source = Vec2(E.vertex[0] == v ? 0.0 : E.length, 0.0);
+    w.sigma = sigma;
+    w.origin = origin;
+    w.id = ids_();
+    w.markPropagated();
+    addInterval(e, w, nullptr);
+  }
+}
+
+// ===  One propagation case =======================================================================
+void GeodesicSolver::propagate(Index edge, const Interval& w) {
+  const Edge& E = mesh_.edge(edge);
+  const Index f = E.face[1 - w.side];
+  if (f == kNoIndex) return;
+  const FaceFrame& fr = mesh_.frame(f, edge);
+  ++stats_.intervalsPropagated;
+
+  // Only the part not yet propagated (an interval grown by Algorithm 2 propagates its growth).
+  double ranges[2][2];
+  int numRanges = 0;
+  if (w.nothingPropagated()) {
+    ranges[numRanges][0] = w.b0;
+    ranges[numRanges++][1] = w.b1;
+  } else {
+    if (w.pb0 > w.b0) {
+      ranges[numRanges][0] = w.b0;
+      ranges[numRanges++][1] = w.pb0;
+    }
+    if (w.pb1 < w.b1) {
+      ranges[numRanges][0] = w.pb1;
+      ranges[numRanges++][1] = w.b1;
+    }
+  }
+
+  const Vec2 v1 = fr.apexPos, v2(E.length, 0.0);
+  const bool zeroArea = v1.y() <= tol::kFlatFaceRel * std::max(E.length, v1.norm());
+  for (int r = 0; r < numRanges; ++r) {
+    const LocalWindow local{E.length, v1, ranges[r][0], ranges[r][1],
+                            Vec2(w.source.x(), -w.source.y())};
+    const LocalPropagation result = propagateLocal(local);
+    ++counters_.cases;
+    if (const auto kind = degeneracyOf(result.branch)) ++counters_[*kind];
+    if (result.branch == Fig6Branch::ZeroAreaFace) ++counters_.zeroAreaFaces;
+    if (result.branch == Fig6Branch::G1Outside) ++counters_.sourceOnEdgeLineOutside;
+    if (observer_ != nullptr) observer_->onPropagation({f, edge, w, local, result});
+
+    for (int c = 0; c < result.numChildren; ++c) {
+      const LocalChild& child = result.children[c];
+      // e1 = v0→v1, e2 = v1→v2 in the face frame.
+      const bool onE1 = child.edge == 1;
+      const Index ce = onE1 ? fr.edgeToV0 : fr.edgeToV2;
+      const Edge& CE = mesh_.edge(ce);
+      const Vec2 A = onE1 ? Vec2(0.0, 0.0) : v1;
+      const Vec2 B = onE1 ? v1 : v2;
+      const Index vA = onE1 ? E.vertex[0] : fr.apex;
+      const bool forward = CE.vertex[0] == vA;
+      const Vec2 origin2 = forward ? A : B;
+      const Vec2 dir = (forward ? B - A : A - B).normalized();
+      const Vec2 rel = local.source - origin2;
+      const double h = pred::cross(dir, rel);
+      const double interior = pred::cross(dir, (onE1 ? v2 : Vec2(0.0, 0.0)) - origin2);
+
+      Interval n;
+      n.b0 = (forward ? child.t0 : 1.0 - child.t1) * CE.length;
+      n.b1 = (forward ? child.t1 : 1.0 - child.t0) * CE.length;
+      n.b0 = std::clamp(n.b0, 0.0, CE.length);
+      n.b1 = std::clamp(n.b1, 0.0, CE.length);
+      if (!(n.b1 > n.b0)) continue;
+      // The source lies on the crossed face's side of the new edge (the rays leave the face
+      // through it); rounding can put it a hair across, which is a source on the line.
+      n.source = Vec2(rel.dot(dir), zeroArea ? std::abs(h) : std::max(0.0, interior > 0 ? h : -h));
+      n.sigma = w.sigma;
+      n.side = static_cast<std::uint8_t>(mesh_.sideOf(ce, f));
+      n.origin = w.origin;
+      n.id = ids_();
+      if (CE.face[1 - n.side] == kNoIndex) n.markPropagated();
+      addInterval(ce, n, &result.branch);
+    }
+  }
+}
+
+// ===  Edge updates and vertex distances ==========================================================
+void GeodesicSolver::addInterval(Index edge, const Interval& w, const Fig6Branch* branch) {
+  ++stats_.intervalsCreated;
+  const double length = mesh_.edge(edge).length;
+  EdgeIntervals& list = edges_[edge];
+  if (observer_ != nullptr) before_.assign(list.intervals().begin(), list.intervals().end());
+  list.insert(w, length, ids_, report_, scratch_);
+  for (std::size_t k = 0; k < kNumDegeneracyKinds; ++k) counters_.count[k] += report_.degeneracies.count[k];
+
+  for (std::uint32_t id : report_.toQueue) {
+    Interval* iv = list.find(id);
+    const double key = iv->minDistance();
+    iv->queuedKey = key;
+    queue_.push({key, edge, id});
+  }
+  const auto intervals = list.intervals();
+  if (!intervals.empty()) {
+    const Edge& E = mesh_.edge(edge);
+    if (intervals.front().b0 == 0.0) updateVertex(E.vertex[0], intervals.front().distanceAt(0.0));
+    if (intervals.back().b1 == length) updateVertex(E.vertex[1], intervals.back().distanceAt(length));
+  }
+  if (observer_ != nullptr) {
+    observer_->onEdgeUpdate({edge, length, before_, w, list.intervals(), report_, branch});
+  }
+}
+
+void GeodesicSolver::updateVertex(Index v, double d) {
+  double& current = vertexDistance_[v];
+  const double bar = current == kInfinity ? kInfinity : current - tol::kTieRel * current;
+  if (!(d < bar)) return;
+  current = d;
+  if (mesh_.isPseudoSourceVertex(v)) queue_.push({d, kNoIndex, v});
+}
+
+void GeodesicSolver::finish(const SolveOptions& options, double radius) {
+  stats_.radius = radius;
+  const double cutoff = std::min(radius, options.stopDistance);
+  for (Index v = 0; v < mesh_.numVertices(); ++v) {
+    if (vertexDistance_[v] > cutoff) vertexDistance_[v] = kInfinity;
+  }
+  std::uint64_t total = 0, most = 0;
+  for (const EdgeIntervals& e : edges_) {
+    total += e.intervals().size();
+    most = std::max<std::uint64_t>(most, e.intervals().size());
+  }
+  stats_.intervalsAtEnd = total;
+  stats_.maxIntervalsPerEdge = most;
+  if (observer_ != nullptr) observer_->onFinish(*this);
+}
+
+// ===  Queries ====================================================================================
+double GeodesicSolver::distance(const SurfacePoint& p) const { return resolvedDistance(resolve(mesh_, p)); }
+
+double GeodesicSolver::resolvedDistance(const ResolvedPoint& p) const {
+  double best = kInfinity;
+  switch (p.kind) {
+    case SurfacePoint::Kind::Vertex:
+      return vertexDistance_[p.element];
+    case SurfacePoint::Kind::Edge: {
+      const Edge& E = mesh_.edge(p.element);
+      best = edges_[p.element].distanceAt(p.t);
+      best = std::min({best, vertexDistance_[E.vertex[0]] + p.t,
+                       vertexDistance_[E.vertex[1]] + (E.length - p.t)});
+      break;
+    }
+    case SurfacePoint::Kind::Face: {
+      const Index f = p.element;
+      for (Index v : mesh_.face(f)) best = std::min(best, vertexDistance_[v] + (mesh_.position(v) - p.position).norm());
+      for (Index e : mesh_.faceEdges(f)) {
+        const Edge& E = mesh_.edge(e);
+        const Vec3 o = mesh_.position(E.vertex[0]);
+        const Vec3 dir = (mesh_.position(E.vertex[1]) - o) / E.length;
+        const Vec3 rel = p.position - o;
+        const Vec2 q(rel.dot(dir), rel.cross(dir).norm());
+        for (const Interval& w : edges_[e].intervals()) {
+          // Any window gives a valid path: to the point c of its range nearest the straight
+          // line, then straight to q; with the source reflected below the edge the best c is
+          // where the segment s→q crosses the edge, clamped to [b0, b1].
+          const Vec2 s(w.source.x(), -w.source.y());
+          const double u = (q.y() - s.y()) > 0 ? -s.y() / (q.y() - s.y()) : 0.0;
+          const double cx = std::clamp(s.x() + u * (q.x() - s.x()), w.b0, w.b1);
+          const Vec2 c(cx, 0.0);
+          best = std::min(best, w.sigma + (c - s).norm() + (q - c).norm());
+        }
+      }
+      for (const ResolvedPoint& src : sources_) {
+        const bool touches =
+            (src.kind == SurfacePoint::Kind::Face && src.element == f) ||
+            (src.kind == SurfacePoint::Kind::Edge && mesh_.localEdgeIndex(f, src.element) >= 0);
+        if (touches) best = std::min(best, (src.position - p.position).norm());
+      }
+      break;
+    }
+  }
+  return best > stats_.radius ? kInfinity : best;
+}
+
+double GeodesicSolver::targetsMaxDistance(std::span<const ResolvedPoint> targets) const {
+  double worst = 0.0;
+  for (const ResolvedPoint& t : targets) worst = std::max(worst, resolvedDistance(t));
+  return worst;
+}
+
+std::vector<double> exactGeodesicDistance(const Mesh& mesh, std::span<const SurfacePoint> sources,
+                                          const SolveOptions& options) {
+  GeodesicSolver solver(mesh);
+  solver.solve(sources, options);
+  const auto d = solver.vertexDistances();
+  return {d.begin(), d.end()};
+}
+
+}  // namespace geodex

@@ -1,0 +1,241 @@
+#include "geodex/mesh.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <numeric>
+#include <sstream>
+
+#include "geodex/error.h"
+#include "geodex/tolerance.h"
+
+namespace geodex {
+namespace {
+
+// "file:line: " when the soup knows where the element came from, else "".
+std::string where(const TriangleSoup& soup, const std::vector<int>& lines, std::size_t i) {
+  if (i >= lines.size() || lines[i] <= 0) return soup.fileName.empty() ? "" : soup.fileName + ": ";
+  return (soup.fileName.empty() ? std::string("line ") : soup.fileName + ":") +
+         std::to_string(lines[i]) + ": ";
+}
+
+struct UnionFind {
+  std::vector<Index> parent;
+  explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
+  Index find(Index x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  }
+  void unite(Index a, Index b) { parent[find(a)] = find(b); }
+};
+
+}  // namespace
+
+Mesh::Mesh(TriangleSoup soup) : soup_(std::move(soup)) {
+  const auto& P = soup_.positions;
+  const auto& F = soup_.faces;
+  const std::size_t nv = P.size();
+  const std::size_t nf = F.size();
+
+  // ===  Refuse what has no unfolding ==========================================================
+  for (std::size_t v = 0; v < nv; ++v) {
+    if (!P[v].allFinite()) {
+      throw InputError("non-finite-coordinate", where(soup_, soup_.vertexLines, v) + "vertex " +
+                                                    std::to_string(v) +
+                                                    " has a non-finite coordinate");
+    }
+  }
+  for (std::size_t f = 0; f < nf; ++f) {
+    const auto& t = F[f];
+    for (int k = 0; k < 3; ++k) {
+      if (t[k] >= nv) {
+        throw InputError("index-out-of-range",
+                         where(soup_, soup_.faceLines, f) + "face " + std::to_string(f) +
+                             " refers to vertex " + std::to_string(t[k]) + " but there are only " +
+                             std::to_string(nv) + " vertices");
+      }
+    }
+    if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) {
+      throw InputError("repeated-index", where(soup_, soup_.faceLines, f) + "face " +
+                                             std::to_string(f) + " repeats a vertex index");
+    }
+    for (int k = 0; k < 3; ++k) {
+      if (P[t[k]] == P[t[(k + 1) % 3]]) {
+        throw InputError("zero-length-edge",
+                         where(soup_, soup_.faceLines, f) + "face " + std::to_string(f) +
+                             " has a zero-length edge: vertices " + std::to_string(t[k]) +
+                             " and " + std::to_string(t[(k + 1) % 3]) +
+                             " are at the same position (weld duplicate vertices first)");
+      }
+    }
+  }
+
+  // ===  Edges ===================================================================================
+  struct HalfEdge {
+    Index a, b, face;
+    int local;
+  };
+  std::vector<HalfEdge> half;
+  half.reserve(3 * nf);
+  for (Index f = 0; f < nf; ++f) {
+    for (int k = 0; k < 3; ++k) {
+      Index a = F[f][k], b = F[f][(k + 1) % 3];
+      if (a > b) std::swap(a, b);
+      half.push_back({a, b, f, k});
+    }
+  }
+  std::sort(half.begin(), half.end(), [](const HalfEdge& x, const HalfEdge& y) {
+    return x.a != y.a ? x.a < y.a : (x.b != y.b ? x.b < y.b : x.face < y.face);
+  });
+  faceEdges_.assign(nf, {kNoIndex, kNoIndex, kNoIndex});
+  for (std::size_t i = 0; i < half.size();) {
+    std::size_t j = i;
+    while (j < half.size() && half[j].a == half[i].a && half[j].b == half[i].b) ++j;
+    if (j - i > 2) {
+      std::ostringstream os;
+      os << where(soup_, soup_.faceLines, half[i].face) << "non-manifold edge " << half[i].a
+         << "-" << half[i].b << " is shared by " << (j - i) << " faces (";
+      for (std::size_t k = i; k < j && k < i + 5; ++k) os << (k > i ? ", " : "") << half[k].face;
+      os << (j - i > 5 ? ", ...)" : ")");
+      throw InputError("non-manifold-edge", os.str());
+    }
+    const Index e = static_cast<Index>(edges_.size());
+    Edge edge{{half[i].a, half[i].b}, {half[i].face, j - i == 2 ? half[i + 1].face : kNoIndex},
+              (P[half[i].b] - P[half[i].a]).norm()};
+    edges_.push_back(edge);
+    for (std::size_t k = i; k < j; ++k) faceEdges_[half[k].face][half[k].local] = e;
+    i = j;
+  }
+
+  // ===  Face frames and corner angles ===========================================================
+  frames_.resize(3 * nf);
+  cornerAngles_.resize(3 * nf);
+  for (Index f = 0; f < nf; ++f) {
+    for (int k = 0; k < 3; ++k) {
+      const Index e = faceEdges_[f][k];
+      const Edge& edge = edges_[e];
+      const Index apex = F[f][(k + 2) % 3];
+      const Vec3 origin = P[edge.vertex[0]];
+      const Vec3 dir = (P[edge.vertex[1]] - origin) / edge.length;
+      const Vec3 rel = P[apex] - origin;
+      const double x = rel.dot(dir);
+      const double y = rel.cross(dir).norm();
+      FaceFrame& fr = frames_[3 * f + k];
+      fr.edge = e;
+      fr.apex = apex;
+      fr.apexPos = Vec2(x, y);
+      // e1 joins edge.vertex[0] (v0) and the apex, e2 the apex and edge.vertex[1] (v2).
+      const Index kNext = faceEdges_[f][(k + 1) % 3], kPrev = faceEdges_[f][(k + 2) % 3];
+      const bool nextHasV0 = edges_[kNext].vertex[0] == edge.vertex[0] ||
+                             edges_[kNext].vertex[1] == edge.vertex[0];
+      fr.edgeToV0 = nextHasV0 ? kNext : kPrev;
+      fr.edgeToV2 = nextHasV0 ? kPrev : kNext;
+
+      // Corner angle at corner k from atan2(|u × v|, u · v): accurate for needles and caps.
+      const Vec3 u = P[F[f][(k + 1) % 3]] - P[F[f][k]];
+      const Vec3 v = P[F[f][(k + 2) % 3]] - P[F[f][k]];
+      cornerAngles_[3 * f + k] = std::atan2(u.cross(v).norm(), u.dot(v));
+    }
+  }
+
+  // ===  Vertex adjacency (CSR) ==================================================================
+  vertexFaceStart_.assign(nv + 1, 0);
+  for (const auto& t : F)
+    for (Index v : t) ++vertexFaceStart_[v + 1];
+  std::partial_sum(vertexFaceStart_.begin(), vertexFaceStart_.end(), vertexFaceStart_.begin());
+  vertexFaceList_.resize(3 * nf);
+  {
+    std::vector<Index> fill(vertexFaceStart_.begin(), vertexFaceStart_.end() - 1);
+    for (Index f = 0; f < nf; ++f)
+      for (Index v : F[f]) vertexFaceList_[fill[v]++] = f;
+  }
+  vertexEdgeStart_.assign(nv + 1, 0);
+  for (const Edge& e : edges_) {
+    ++vertexEdgeStart_[e.vertex[0] + 1];
+    ++vertexEdgeStart_[e.vertex[1] + 1];
+  }
+  std::partial_sum(vertexEdgeStart_.begin(), vertexEdgeStart_.end(), vertexEdgeStart_.begin());
+  vertexEdgeList_.resize(2 * edges_.size());
+  {
+    std::vector<Index> fill(vertexEdgeStart_.begin(), vertexEdgeStart_.end() - 1);
+    for (Index e = 0; e < edges_.size(); ++e) {
+      vertexEdgeList_[fill[edges_[e].vertex[0]]++] = e;
+      vertexEdgeList_[fill[edges_[e].vertex[1]]++] = e;
+    }
+  }
+
+  // ===  Angle sums, boundary, pseudo-sources ====================================================
+  angleSums_.assign(nv, 0.0);
+  for (Index f = 0; f < nf; ++f)
+    for (int k = 0; k < 3; ++k) angleSums_[F[f][k]] += cornerAngles_[3 * f + k];
+  boundaryVertex_.assign(nv, 0);
+  for (const Edge& e : edges_) {
+    if (e.face[1] == kNoIndex) boundaryVertex_[e.vertex[0]] = boundaryVertex_[e.vertex[1]] = 1;
+  }
+  pseudoSource_.assign(nv, 0);
+  for (Index v = 0; v < nv; ++v) {
+    // A vertex where several fans meet (non-manifold vertex) joins surfaces that share only that
+    // point: geodesics cross from one fan to another through it, so it is a pseudo-source too.
+    const auto faces = vertexFaces(v);
+    bool severalFans = false;
+    if (faces.size() > 1) {
+      std::vector<Index> parent(faces.size());
+      std::iota(parent.begin(), parent.end(), 0);
+      auto find = [&](Index x) {
+        while (parent[x] != x) x = parent[x] = parent[parent[x]];
+        return x;
+      };
+      auto slot = [&](Index f) {
+        return static_cast<Index>(std::find(faces.begin(), faces.end(), f) - faces.begin());
+      };
+      for (Index e : vertexEdges(v)) {
+        if (edges_[e].face[1] != kNoIndex) parent[find(slot(edges_[e].face[0]))] = find(slot(edges_[e].face[1]));
+      }
+      Index roots = 0;
+      for (Index i = 0; i < faces.size(); ++i) roots += find(i) == i;
+      severalFans = roots > 1;
+    }
+    pseudoSource_[v] = boundaryVertex_[v] || severalFans ||
+                       angleSums_[v] >= 2.0 * std::numbers::pi - tol::kSaddleAngle;
+  }
+
+  // ===  Components and scale ====================================================================
+  UnionFind uf(nv);
+  for (const auto& t : F) {
+    uf.unite(t[0], t[1]);
+    uf.unite(t[1], t[2]);
+  }
+  component_.assign(nv, kNoIndex);
+  std::vector<Index> label(nv, kNoIndex);
+  for (Index v = 0; v < nv; ++v) {
+    if (!isReferenced(v)) continue;
+    const Index r = uf.find(v);
+    if (label[r] == kNoIndex) label[r] = static_cast<Index>(numComponents_++);
+    component_[v] = label[r];
+  }
+  if (nv > 0) {
+    Vec3 lo = P[0], hi = P[0];
+    for (const Vec3& p : P) {
+      lo = lo.cwiseMin(p);
+      hi = hi.cwiseMax(p);
+    }
+    bboxDiagonal_ = (hi - lo).norm();
+  }
+}
+
+Index Mesh::findEdge(Index a, Index b) const {
+  for (Index e : vertexEdges(a)) {
+    const Edge& edge = edges_[e];
+    if ((edge.vertex[0] == a && edge.vertex[1] == b) || (edge.vertex[0] == b && edge.vertex[1] == a))
+      return e;
+  }
+  return kNoIndex;
+}
+
+int Mesh::localEdgeIndex(Index f, Index e) const {
+  for (int k = 0; k < 3; ++k)
+    if (faceEdges_[f][k] == e) return k;
+  return -1;
+}
+
+}  // namespace geodex

@@ -1,0 +1,137 @@
+#include "geodex/propagate.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "geodex/predicates.h"
+#include "geodex/tolerance.h"
+
+namespace geodex {
+
+std::string_view name(Fig6Branch b) {
+  switch (b) {
+    case Fig6Branch::ZeroAreaFace: return "zero-area-face";
+    case Fig6Branch::G1Inside: return "G1-inside";
+    case Fig6Branch::G1Outside: return "G1-outside";
+    case Fig6Branch::G2: return "G2";
+    case Fig6Branch::G4: return "G4";
+    case Fig6Branch::G3: return "G3";
+    case Fig6Branch::G5: return "G5";
+    case Fig6Branch::LeftOfWedge: return "left-of-wedge";
+    case Fig6Branch::RightOfWedge: return "right-of-wedge";
+    case Fig6Branch::InsideWedge: return "inside-wedge";
+  }
+  return "?";
+}
+
+std::optional<DegeneracyKind> degeneracyOf(Fig6Branch b) {
+  switch (b) {
+    case Fig6Branch::G1Inside:
+    case Fig6Branch::G1Outside: return DegeneracyKind::G1;
+    case Fig6Branch::G2: return DegeneracyKind::G2;
+    case Fig6Branch::G3: return DegeneracyKind::G3;
+    case Fig6Branch::G4: return DegeneracyKind::G4;
+    case Fig6Branch::G5: return DegeneracyKind::G5;
+    default: return std::nullopt;
+  }
+}
+
+double localScale(const LocalWindow& w) {
+  const Vec2 v2(w.edgeLength, 0.0);
+  return std::max({w.edgeLength, w.apex.norm(), (w.apex - v2).norm()});
+}
+
+namespace {
+
+void addChild(LocalPropagation& r, std::uint8_t edge, double t0, double t1) {
+  if (t0 > t1) std::swap(t0, t1);
+  if (t1 <= t0) return;
+  r.children[r.numChildren++] = {edge, t0, t1};
+}
+
+// A zero-area face: v1 lies on the line of e0, so e1 and e2 lie on it too. A ray from s crosses
+// that common line once, inside [b0, b1], and enters whichever of e1, e2 covers the crossing:
+// the window passes straight through, clipped to each edge's extent on the line.
+LocalPropagation passThroughZeroAreaFace(const LocalWindow& w) {
+  LocalPropagation r{Fig6Branch::ZeroAreaFace};
+  const double px = w.apex.x(), L = w.edgeLength;
+  // e1 runs from v0 (x = 0) to v1 (x = px): t = x / px.
+  if (px != 0.0) {
+    const double lo = std::max(w.b0, std::min(0.0, px)), hi = std::min(w.b1, std::max(0.0, px));
+    if (hi > lo) addChild(r, 1, std::clamp(lo / px, 0.0, 1.0), std::clamp(hi / px, 0.0, 1.0));
+  }
+  // e2 runs from v1 (x = px) to v2 (x = L): t = (x − px) / (L − px).
+  if (L != px) {
+    const double d = L - px;
+    const double lo = std::max(w.b0, std::min(px, L)), hi = std::min(w.b1, std::max(px, L));
+    if (hi > lo) {
+      addChild(r, 2, std::clamp((lo - px) / d, 0.0, 1.0), std::clamp((hi - px) / d, 0.0, 1.0));
+    }
+  }
+  return r;
+}
+
+}  // namespace
+
+LocalPropagation propagateLocal(const LocalWindow& w) {
+  using pred::Side;
+  const Vec2 v0(0.0, 0.0), v2(w.edgeLength, 0.0), v1 = w.apex, s = w.source;
+  const Vec2 b0(w.b0, 0.0), b1(w.b1, 0.0);
+  const double scale = localScale(w);
+  const double coincide = tol::kCoincideRel * scale;
+
+  if (v1.y() <= tol::kFlatFaceRel * scale) return passThroughZeroAreaFace(w);
+
+  // (1) G1: s on the line of e0. Within the window (s = b0, s = b1, or between after a merge)
+  //     every point of the face is seen straight from s: e1 and e2 whole. Outside it, the
+  //     window's rays run along e0 and none enters the face.
+  if (std::abs(s.y()) <= coincide) {
+    if (s.x() >= w.b0 - coincide && s.x() <= w.b1 + coincide) {
+      LocalPropagation r{Fig6Branch::G1Inside};
+      addChild(r, 1, 0.0, 1.0);
+      addChild(r, 2, 0.0, 1.0);
+      return r;
+    }
+    return {Fig6Branch::G1Outside};
+  }
+
+  const bool b0IsV0 = w.b0 <= coincide;
+  const bool b1IsV2 = w.edgeLength - w.b1 <= coincide;
+
+  // (2) s, b0, v1 collinear: the left ray hits v1 exactly, so e1 gets nothing from the wedge
+  //     (G2) — unless b0 = v0 too, when the ray runs along e1 and e1 gets the whole edge (G4).
+  const Side sideB0 = pred::sideOfRay(s, b0, v1);
+  if (sideB0 == Side::Collinear) {
+    LocalPropagation r{b0IsV0 ? Fig6Branch::G4 : Fig6Branch::G2};
+    addChild(r, 2, 0.0, pred::rayHitsSegment(s, b1, v1, v2));
+    if (b0IsV0) addChild(r, 1, 0.0, 1.0);
+    return r;
+  }
+  // (3) s, b1, v1 collinear: the mirror image (G3, and G5 when b1 = v2).
+  const Side sideB1 = pred::sideOfRay(s, b1, v1);
+  if (sideB1 == Side::Collinear) {
+    LocalPropagation r{b1IsV2 ? Fig6Branch::G5 : Fig6Branch::G3};
+    addChild(r, 1, pred::rayHitsSegment(s, b0, v0, v1), 1.0);
+    if (b1IsV2) addChild(r, 2, 0.0, 1.0);
+    return r;
+  }
+  // (4) v1 left of the ray s→b0: the whole wedge passes right of v1, onto e2 (Fig. 3a).
+  if (sideB0 == Side::Left) {
+    LocalPropagation r{Fig6Branch::LeftOfWedge};
+    addChild(r, 2, pred::rayHitsSegment(s, b0, v1, v2), pred::rayHitsSegment(s, b1, v1, v2));
+    return r;
+  }
+  // (5) v1 right of the ray s→b1: the whole wedge passes left of v1, onto e1.
+  if (sideB1 == Side::Right) {
+    LocalPropagation r{Fig6Branch::RightOfWedge};
+    addChild(r, 1, pred::rayHitsSegment(s, b0, v0, v1), pred::rayHitsSegment(s, b1, v0, v1));
+    return r;
+  }
+  // (6) v1 strictly inside the wedge: e1 up to v1, e2 from v1 (Fig. 3b).
+  LocalPropagation r{Fig6Branch::InsideWedge};
+  addChild(r, 1, pred::rayHitsSegment(s, b0, v0, v1), 1.0);
+  addChild(r, 2, 0.0, pred::rayHitsSegment(s, b1, v1, v2));
+  return r;
+}
+
+}  // namespace geodex
