@@ -277,7 +277,15 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, Interval
     }
     for (std::size_t k = 0; k + 1 < L.size(); ++k) {
       const double gap = L[k + 1].b0 - L[k].b1;
-      if (gap == 0.0 || gap >= tiny) continue;
+      if (gap == 0.0) continue;
+      if (gap > 0.0) {
+        // The shadow a flat vertex leaves grows with the distance (see tol::kFlatVertexAngle).
+        const double shadow = tol::kFlatVertexAngle *
+                              std::min(L[k].distanceAt(L[k].b1), L[k + 1].distanceAt(L[k + 1].b0));
+        if (gap >= std::max(tiny, shadow)) continue;
+      } else if (gap <= -tiny) {
+        continue;
+      }
       ++report.degeneracies[gap > 0.0 ? DegeneracyKind::D3 : DegeneracyKind::D2];
       const double mid = 0.5 * (L[k].b1 + L[k + 1].b0);
       L[k].b1 = mid;

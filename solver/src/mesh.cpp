@@ -196,7 +196,7 @@ Mesh::Mesh(TriangleSoup soup) : soup_(std::move(soup)) {
       severalFans = roots > 1;
     }
     pseudoSource_[v] = boundaryVertex_[v] || severalFans ||
-                       angleSums_[v] >= 2.0 * std::numbers::pi - tol::kSaddleAngle;
+                       angleSums_[v] > 2.0 * std::numbers::pi + tol::kFlatVertexAngle;
   }
 
   // ===  Components and scale ====================================================================

@@ -70,7 +70,8 @@ class Mesh {
   double cornerAngle(Index f, int k) const { return cornerAngles_[3 * f + k]; }
   double angleSum(Index v) const { return angleSums_[v]; }
   bool isBoundaryVertex(Index v) const { return boundaryVertex_[v] != 0; }
-  /// Boundary vertex, or angle sum ≥ 2π − tol::kSaddleAngle: geodesics may bend here.
+  /// Boundary vertex, non-manifold vertex, or angle sum > 2π + tol::kFlatVertexAngle (a saddle):
+  /// geodesics may bend here, so the solver makes it a pseudo-source.
   bool isPseudoSourceVertex(Index v) const { return pseudoSource_[v] != 0; }
   bool isReferenced(Index v) const { return vertexFaceStart_[v] != vertexFaceStart_[v + 1]; }
 

@@ -26,7 +26,8 @@ inline constexpr double kFlatFaceRel = 1e-12;
 // ===  Geodesic discontinuities (Sect. 3.2 and 4.2, Algorithm 2 steps 3–5) =====================
 
 /// D1: intervals shorter than this × edge length are removed (merged into a neighbour).
-/// D3: gaps shorter than this × edge length are sewn at their midpoint.
+/// D3: gaps shorter than this × edge length, or than kFlatVertexAngle × the distance there, are
+///     sewn at their midpoint.
 /// D2: overlaps up to this × edge length are resolved at their midpoint; larger ones are bugs.
 inline constexpr double kTinyIntervalRel = 1e-11;
 
@@ -46,13 +47,24 @@ inline constexpr double kContinuityRel = 1e-10;
 /// per decision keeps results within 1e-12 relative even along long chains of ties.
 inline constexpr double kTieRel = 1e-14;
 
+/// Vertex-distance filter (Surazhsky et al. 2005, Sect. 4): the part of a new window that is
+/// longer than the path through an end vertex of its edge, D(v) + |v x|, by more than this ×
+/// (D(v) + edge length) is trimmed off before Algorithm 2. No geodesic passes through that part
+/// (any path through it is beaten by the path through v), so exactness is kept; the margin keeps
+/// rounding (~1e-15) from trimming the very window that gave D(v).
+inline constexpr double kPruneRel = 1e-12;
+
 // ===  Mesh-level ================================================================================
 
-/// A vertex is a pseudo-source (Sect. 2: geodesics may pass through it) when it is on the
-/// boundary or its angle sum is at least 2π − this. Erring towards "saddle" is always safe (a
-/// pseudo-source only adds valid candidate paths); erring the other way would leave a shadow
-/// wedge uncovered. Angle sums from atan2 are accurate to ~1e-15, so flat vertices count.
-inline constexpr double kSaddleAngle = 1e-9;
+/// A vertex is *flat* when its angle sum is within this of 2π (atan2 angle sums carry ~3e-15 of
+/// rounding; 1e-12 leaves a margin of ~300). Geodesics pass straight through a flat vertex, so it
+/// is not a pseudo-source (Sect. 2): making every flat vertex of a CAD face or a planar grid a
+/// pseudo-source (as the reference code does) multiplies the windows per edge by ~15 for nothing.
+/// Pseudo-sources are boundary vertices, non-manifold vertices, and vertices whose angle sum
+/// exceeds 2π + this. A flat vertex can leave a shadow wedge of at most this angle between the
+/// windows passing either side of it; Algorithm 2 step 4 sews gaps up to this × the distance
+/// (see kTinyIntervalRel), which closes that wedge at any distance from the vertex.
+inline constexpr double kFlatVertexAngle = 1e-12;
 
 /// Barycentric or edge parameters within this of 0 or 1 snap a source or target onto the
 /// edge or vertex it is on.
