@@ -1,0 +1,146 @@
+// The Fig. 6 decision tree on hand-made local configurations. Expected ranges are worked out by
+// hand (ray/segment intersections with small rational answers), not by the code under test.
+#include "geodex/propagate.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace geodex {
+namespace {
+
+// v0 = (0,0), v2 = (2,0), v1 = (1,1) unless said otherwise.
+LocalWindow window(double b0, double b1, Vec2 source, Vec2 apex = Vec2(1.0, 1.0), double L = 2.0) {
+  return {L, apex, b0, b1, source};
+}
+
+void expectChild(const LocalPropagation& r, int k, int edge, double t0, double t1) {
+  ASSERT_LT(k, r.numChildren);
+  EXPECT_EQ(r.children[k].edge, edge);
+  EXPECT_NEAR(r.children[k].t0, t0, 1e-14);
+  EXPECT_NEAR(r.children[k].t1, t1, 1e-14);
+}
+
+TEST(Fig6, InsideWedgeGivesBothEdges) {
+  // Rays from (1,-1) through (0.5,0) and (1.5,0) meet e1 at t = 1/3 and e2 at t = 2/3.
+  const auto r = propagateLocal(window(0.5, 1.5, Vec2(1.0, -1.0)));
+  EXPECT_EQ(r.branch, Fig6Branch::InsideWedge);
+  ASSERT_EQ(r.numChildren, 2);
+  expectChild(r, 0, 1, 1.0 / 3.0, 1.0);
+  expectChild(r, 1, 2, 0.0, 2.0 / 3.0);
+}
+
+TEST(Fig6, ApexLeftOfWedgeGivesE2Only) {
+  // Source (1,-1), window [1.2, 1.6]: both rays pass right of v1 = (1,1) and hit e2 (v1→v2,
+  // points (1+t, 1-t)): through (1.2,0): (1+0.2u, -1+u) → u = 5/3, t = 1/3;
+  // through (1.6,0): (1+0.6u, -1+u) → u = 1.25, t = 0.75.
+  const auto r = propagateLocal(window(1.2, 1.6, Vec2(1.0, -1.0)));
+  EXPECT_EQ(r.branch, Fig6Branch::LeftOfWedge);
+  ASSERT_EQ(r.numChildren, 1);
+  expectChild(r, 0, 2, 1.0 / 3.0, 0.75);
+}
+
+TEST(Fig6, ApexRightOfWedgeGivesE1Only) {
+  // The mirror image of the previous case.
+  const auto r = propagateLocal(window(0.4, 0.8, Vec2(1.0, -1.0)));
+  EXPECT_EQ(r.branch, Fig6Branch::RightOfWedge);
+  ASSERT_EQ(r.numChildren, 1);
+  expectChild(r, 0, 1, 0.25, 2.0 / 3.0);
+}
+
+TEST(Fig6, G1SourceOnEdgeInsideWindowGivesWholeEdges) {
+  const auto r = propagateLocal(window(0.5, 1.5, Vec2(0.5, 0.0)));
+  EXPECT_EQ(r.branch, Fig6Branch::G1Inside);
+  EXPECT_EQ(degeneracyOf(r.branch), DegeneracyKind::G1);
+  ASSERT_EQ(r.numChildren, 2);
+  expectChild(r, 0, 1, 0.0, 1.0);
+  expectChild(r, 1, 2, 0.0, 1.0);
+}
+
+TEST(Fig6, G1SourceOnEdgeLineOutsideWindowPropagatesNothing) {
+  const auto r = propagateLocal(window(0.5, 1.5, Vec2(-1.0, 0.0)));
+  EXPECT_EQ(r.branch, Fig6Branch::G1Outside);
+  EXPECT_EQ(r.numChildren, 0);
+}
+
+TEST(Fig6, G2LeftRayThroughApex) {
+  // s = (0,-1), b0 = (0.5,0), v1 = (1,1) collinear. The right ray through (1.5,0) meets e2 at
+  // (1.5u, -1+u) = (1+t, 1-t) → t = 0.8.
+  const auto r = propagateLocal(window(0.5, 1.5, Vec2(0.0, -1.0)));
+  EXPECT_EQ(r.branch, Fig6Branch::G2);
+  ASSERT_EQ(r.numChildren, 1);
+  expectChild(r, 0, 2, 0.0, 0.8);
+}
+
+TEST(Fig6, G3RightRayThroughApex) {
+  // Mirror of G2: s = (2,-1), b1 = (1.5,0), v1 collinear; the left ray through (0.5,0) meets e1
+  // at t = 0.2.
+  const auto r = propagateLocal(window(0.5, 1.5, Vec2(2.0, -1.0)));
+  EXPECT_EQ(r.branch, Fig6Branch::G3);
+  ASSERT_EQ(r.numChildren, 1);
+  expectChild(r, 0, 1, 0.2, 1.0);
+}
+
+TEST(Fig6, G4SourceV0ApexCollinear) {
+  // s = (-1,-1), b0 = v0, v1 = (1,1): the left ray runs along e1, which gets the whole edge; the
+  // right ray through (1,0): (-1+2u, -1+u) = (1+t, 1-t) → t = 2/3 on e2.
+  const auto r = propagateLocal(window(0.0, 1.0, Vec2(-1.0, -1.0)));
+  EXPECT_EQ(r.branch, Fig6Branch::G4);
+  EXPECT_EQ(degeneracyOf(r.branch), DegeneracyKind::G4);
+  ASSERT_EQ(r.numChildren, 2);
+  expectChild(r, 0, 2, 0.0, 2.0 / 3.0);
+  expectChild(r, 1, 1, 0.0, 1.0);
+}
+
+TEST(Fig6, G5SourceV2ApexCollinear) {
+  const auto r = propagateLocal(window(1.0, 2.0, Vec2(3.0, -1.0)));
+  EXPECT_EQ(r.branch, Fig6Branch::G5);
+  ASSERT_EQ(r.numChildren, 2);
+  expectChild(r, 0, 1, 1.0 / 3.0, 1.0);
+  expectChild(r, 1, 2, 0.0, 1.0);
+}
+
+TEST(Fig6, CompositeSourceAtB0AtV0IsDecidedAsG1) {
+  // s = b0 = v0 is G1, G2 and G4 at once; the tree's order decides G1.
+  const auto r = propagateLocal(window(0.0, 1.0, Vec2(0.0, 0.0)));
+  EXPECT_EQ(r.branch, Fig6Branch::G1Inside);
+}
+
+TEST(Fig6, ZeroAreaFacePassesThrough) {
+  // v1 = (1,0) on e0's line: [0.5, 1.5] splits into e1's t in [0.5, 1] and e2's t in [0, 0.5].
+  const auto r = propagateLocal(window(0.5, 1.5, Vec2(1.0, -1.0), Vec2(1.0, 0.0)));
+  EXPECT_EQ(r.branch, Fig6Branch::ZeroAreaFace);
+  ASSERT_EQ(r.numChildren, 2);
+  expectChild(r, 0, 1, 0.5, 1.0);
+  expectChild(r, 1, 2, 0.0, 0.5);
+}
+
+TEST(Fig6, NearCollinearWithinToleranceIsG2AndBeyondIsNot) {
+  // Nudge s off the line through b0 and v1 perpendicular to it by δ: a sine of δ/|s-b0|.
+  const Vec2 s(0.0, -1.0);
+  const Vec2 normal = Vec2(1.0, -0.5).normalized();  // perpendicular to (0.5, 1)
+  const double len = std::sqrt(1.25);
+  EXPECT_EQ(propagateLocal(window(0.5, 1.5, s + 1e-13 * len * normal)).branch, Fig6Branch::G2);
+  // Moving s towards +x tilts the ray s→b0 to the left of v1: v1 is then inside the wedge.
+  EXPECT_EQ(propagateLocal(window(0.5, 1.5, s + 1e-6 * len * normal)).branch, Fig6Branch::InsideWedge);
+  EXPECT_EQ(propagateLocal(window(0.5, 1.5, s - 1e-6 * len * normal)).branch, Fig6Branch::LeftOfWedge);
+}
+
+TEST(Fig6, DecisionsAreScaleInvariant) {
+  const LocalWindow base = window(0.5, 1.5, Vec2(0.0, -1.0));
+  for (double scale : {1e-6, 1e6}) {
+    LocalWindow w = base;
+    w.edgeLength *= scale;
+    w.apex *= scale;
+    w.b0 *= scale;
+    w.b1 *= scale;
+    w.source *= scale;
+    const auto r = propagateLocal(w);
+    EXPECT_EQ(r.branch, Fig6Branch::G2) << "scale " << scale;
+    ASSERT_EQ(r.numChildren, 1);
+    EXPECT_NEAR(r.children[0].t1, 0.8, 1e-12);
+  }
+}
+
+}  // namespace
+}  // namespace geodex
