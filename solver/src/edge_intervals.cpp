@@ -251,6 +251,7 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, Interval
       }
       ++report.degeneracies[DegeneracyKind::D1];
       const Interval& t = L[r];
+      report.removedTiny.emplace_back(t.b0, t.b1);
       if (w > 0 && L[w - 1].b1 >= t.b0 - tiny) {
         Interval& prev = L[w - 1];
         if (t.fullyPropagated() && prev.pb1 >= prev.b1 && !prev.nothingPropagated()) prev.pb1 = t.b1;

@@ -14,6 +14,7 @@
 
 #include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "geodex/degeneracy.h"
@@ -27,12 +28,16 @@ struct EdgeUpdateReport {
   std::vector<std::uint32_t> toQueue;
   /// Shared endpoints created by an Eq. 1 split: the two neighbours must agree here (D4).
   std::vector<double> eq1Breakpoints;
+  /// Ranges of the tiny intervals step 3 removed (D1): there the list takes a neighbour's values
+  /// by contract, so the pointwise minimum is not expected to hold inside them.
+  std::vector<std::pair<double, double>> removedTiny;
   /// Whether any part of the incoming interval survived.
   bool incomingSurvived = false;
   DegeneracyCounters degeneracies;  ///< D1–D4 found in this update
   void clear() {
     toQueue.clear();
     eq1Breakpoints.clear();
+    removedTiny.clear();
     incomingSurvived = false;
     degeneracies = {};
   }

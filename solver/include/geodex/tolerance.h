@@ -70,4 +70,15 @@ inline constexpr double kFlatVertexAngle = 1e-12;
 /// edge or vertex it is on.
 inline constexpr double kSnapParam = 1e-12;
 
+// ===  Verification (verify/) ====================================================================
+
+/// How far an edge's distance function may stray from the exact pointwise minimum of the list
+/// before an update and the incoming interval (Algorithm 2 step 6, full tier), relative to
+/// (distance + edge length). Not a free parameter: it is the sum of what steps 1–5 may move by
+/// contract — a breakpoint left with a mismatch up to kContinuityRel, a tiny interval or gap
+/// (kTinyIntervalRel) absorbed by a neighbour on either side, a flat-vertex shadow sewn
+/// (kFlatVertexAngle × distance), and a tie not taken (kTieRel).
+inline constexpr double kPointwiseMinRel =
+    kContinuityRel + 2.0 * kTinyIntervalRel + 2.0 * kFlatVertexAngle + kTieRel;
+
 }  // namespace geodex::tol

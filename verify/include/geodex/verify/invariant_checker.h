@@ -1,0 +1,85 @@
+#pragma once
+// Algorithm 2 step 6, checked live: an observer the solver calls after every edge update and at
+// the end of a solve. It shares none of the solver's repair logic: it only looks at the lists.
+//
+//   cheap tier (every update): sorted by b0; inside [0, |e|]; no overlap; no gap below ε left
+//     unsewn; no interval shorter than ε; d0, d1, σ finite and ≥ 0; a real unfolded source
+//     (source height ≥ 0, |d0 − d1| ≤ b1 − b0 + ε); the two distances agree at every Eq. 1
+//     breakpoint. (Elsewhere neighbours may legitimately disagree mid-run: the ends of an
+//     incoming interval's range are where the wavefront has not arrived yet.)
+//   full tier (adds): the pointwise-min property — the list after the update equals the minimum
+//     of the list before and the incoming interval, sampled along the edge (except inside the
+//     tiny intervals step 3 removed, where a neighbour's values stand in by the paper's
+//     contract, and within the slack step 4 may sew); and at the end,
+//     every edge reached is fully covered and every vertex's distance is the same from all its
+//     edges (the final field is continuous).
+// A violation throws InvariantViolation, which carries everything needed to replay it.
+
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "geodex/geodesic_solver.h"
+#include "geodex/observer.h"
+
+namespace geodex::verify {
+
+enum class CheckLevel { Cheap, Full };
+
+/// One failed invariant, with the edge update it happened in.
+class InvariantViolation : public std::runtime_error {
+ public:
+  InvariantViolation(std::string invariant, const std::string& message) : std::runtime_error(message), invariant_(std::move(invariant)) {}
+  const std::string& invariant() const { return invariant_; }
+
+  // The edge update (empty lists for end-of-run invariants).
+  Index edge = kNoIndex;
+  double edgeLength = 0.0;
+  std::vector<Interval> before, after;
+  Interval incoming;
+  std::string branch;  ///< the Fig. 6 leaf that made the incoming interval, or "source"
+
+ private:
+  std::string invariant_;
+};
+
+/// Per-invariant tallies, for reports.
+struct InvariantTally {
+  std::string name;
+  std::uint64_t checked = 0;
+  std::uint64_t violated = 0;
+  double worst = 0.0;  ///< largest relative error seen (0 for yes/no invariants)
+};
+
+class InvariantChecker : public SolverObserver {
+ public:
+  explicit InvariantChecker(CheckLevel level = CheckLevel::Cheap, bool throwOnViolation = true);
+
+  void onEdgeUpdate(const EdgeUpdateEvent& e) override;
+  void onFinish(const GeodesicSolver& solver) override;
+
+  const std::vector<InvariantTally>& tallies() const { return tallies_; }
+  std::uint64_t violations() const;
+  /// The first violation (when not throwing), else nullptr.
+  const InvariantViolation* firstViolation() const { return first_.get(); }
+
+  /// Checks one list as the cheap tier does; returns the name of the first broken invariant and
+  /// a description in `why`, or "" if the list is well formed. Usable on its own (tests, fuzzers).
+  static std::string checkList(std::span<const Interval> list, double edgeLength, std::string& why);
+
+ private:
+  enum Id { Sorted, InRange, NoOverlap, NoTinyGap, NoTinyInterval, FiniteNonNegative, RealSource,
+            ContinuousAtEq1, PointwiseMin, FullCoverage, VertexAgreement, kNumInvariants };
+  void record(Id id, bool ok, double error, const std::string& why, const EdgeUpdateEvent* e);
+
+  CheckLevel level_;
+  bool throw_;
+  std::vector<InvariantTally> tallies_;
+  std::unique_ptr<InvariantViolation> first_;
+};
+
+/// Writes a violation as a text reproducer `geodex repro` reads back (format in docs/fuzzing.md).
+void writeReproducer(const InvariantViolation& v, const std::string& path);
+
+}  // namespace geodex::verify

@@ -1,0 +1,240 @@
+#include "geodex/verify/invariant_checker.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+#include "geodex/tolerance.h"
+
+namespace geodex::verify {
+namespace {
+
+const char* const kNames[] = {"sorted",          "in-range",          "no-overlap",
+                              "no-tiny-gap",     "no-tiny-interval",  "finite-non-negative",
+                              "real-source",     "continuous-at-eq1", "pointwise-min",
+                              "full-coverage",   "vertex-agreement"};
+
+std::string describe(const Interval& w) {
+  std::ostringstream os;
+  os << std::setprecision(17) << "[" << w.b0 << ", " << w.b1 << "] s=(" << w.source.x() << ", "
+     << w.source.y() << ") sigma=" << w.sigma << " side=" << int(w.side);
+  return os.str();
+}
+
+double listDistance(std::span<const Interval> list, double x) {
+  double best = INFINITY;
+  for (const Interval& w : list)
+    if (x >= w.b0 && x <= w.b1) best = std::min(best, w.distanceAt(x));
+  return best;
+}
+
+}  // namespace
+
+InvariantChecker::InvariantChecker(CheckLevel level, bool throwOnViolation)
+    : level_(level), throw_(throwOnViolation) {
+  for (const char* n : kNames) tallies_.push_back({n});
+}
+
+std::uint64_t InvariantChecker::violations() const {
+  std::uint64_t n = 0;
+  for (const auto& t : tallies_) n += t.violated;
+  return n;
+}
+
+void InvariantChecker::record(Id id, bool ok, double error, const std::string& why,
+                              const EdgeUpdateEvent* e) {
+  InvariantTally& t = tallies_[id];
+  ++t.checked;
+  t.worst = std::max(t.worst, error);
+  if (ok) return;
+  ++t.violated;
+  if (first_ && !throw_) return;
+  auto v = std::make_unique<InvariantViolation>(kNames[id], std::string("invariant '") + kNames[id] + "' violated: " + why);
+  if (e != nullptr) {
+    v->edge = e->edge;
+    v->edgeLength = e->edgeLength;
+    v->before.assign(e->before.begin(), e->before.end());
+    v->after.assign(e->after.begin(), e->after.end());
+    v->incoming = e->incoming;
+    v->branch = e->branch != nullptr ? std::string(name(*e->branch)) : "source";
+  }
+  if (throw_) throw *v;
+  first_ = std::move(v);
+}
+
+std::string InvariantChecker::checkList(std::span<const Interval> list, double L, std::string& why) {
+  const double tiny = tol::kTinyIntervalRel * L;
+  std::ostringstream os;
+  os << std::setprecision(17);
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const Interval& w = list[i];
+    if (!(std::isfinite(w.b0) && std::isfinite(w.b1) && std::isfinite(w.sigma) && w.sigma >= 0.0 &&
+          w.source.allFinite())) {
+      os << "interval " << i << " " << describe(w) << " has a non-finite or negative value";
+      why = os.str();
+      return "finite-non-negative";
+    }
+    if (w.b0 < 0.0 || w.b1 > L) {
+      os << "interval " << i << " " << describe(w) << " leaves [0, " << L << "]";
+      why = os.str();
+      return "in-range";
+    }
+    if (w.b1 - w.b0 < tiny) {
+      os << "interval " << i << " " << describe(w) << " is shorter than epsilon = " << tiny;
+      why = os.str();
+      return "no-tiny-interval";
+    }
+    if (w.source.y() < 0.0 || std::abs(w.d0() - w.d1()) > (w.b1 - w.b0) + tiny) {
+      os << "interval " << i << " " << describe(w) << " has no real unfolded source (|d0-d1| = "
+         << std::abs(w.d0() - w.d1()) << ")";
+      why = os.str();
+      return "real-source";
+    }
+    if (i == 0) continue;
+    const Interval& p = list[i - 1];
+    if (w.b0 < p.b0) {
+      os << "intervals " << i - 1 << " and " << i << " are not sorted by b0";
+      why = os.str();
+      return "sorted";
+    }
+    if (w.b0 < p.b1) {
+      os << "intervals " << i - 1 << " " << describe(p) << " and " << i << " " << describe(w) << " overlap by " << p.b1 - w.b0;
+      why = os.str();
+      return "no-overlap";
+    }
+    if (w.b0 > p.b1 && w.b0 - p.b1 < tiny) {
+      os << "gap of " << w.b0 - p.b1 << " < epsilon between intervals " << i - 1 << " and " << i << " left unsewn";
+      why = os.str();
+      return "no-tiny-gap";
+    }
+  }
+  if (!list.empty() && ((list.front().b0 > 0.0 && list.front().b0 < tiny) ||
+                        (list.back().b1 < L && L - list.back().b1 < tiny))) {
+    why = "gap below epsilon left unsewn at an end of the edge";
+    return "no-tiny-gap";
+  }
+  return "";
+}
+
+void InvariantChecker::onEdgeUpdate(const EdgeUpdateEvent& e) {
+  // --- cheap tier: the list is well formed
+  std::string why;
+  const std::string broken = checkList(e.after, e.edgeLength, why);
+  for (int id = Sorted; id <= RealSource; ++id) record(static_cast<Id>(id), broken != kNames[id], 0.0, why, &e);
+
+  // --- cheap tier: the two neighbours agree at every Eq. 1 breakpoint
+  for (double x : e.report.eq1Breakpoints) {
+    // Find the two intervals meeting at x (if steps 3–5 moved or merged the breakpoint away,
+    // there is nothing left to compare).
+    for (std::size_t i = 0; i + 1 < e.after.size(); ++i) {
+      if (e.after[i].b1 != x || e.after[i + 1].b0 != x) continue;
+      const double a = e.after[i].distanceAt(x), b = e.after[i + 1].distanceAt(x);
+      const double scale = std::max(a, b) + e.edgeLength;
+      const double err = std::abs(a - b) / scale;
+      std::ostringstream os;
+      os << std::setprecision(17) << "at the Eq. 1 breakpoint x = " << x << " the distances are " << a << " and " << b;
+      record(ContinuousAtEq1, err <= tol::kContinuityRel, err, os.str(), &e);
+    }
+  }
+
+  if (level_ != CheckLevel::Full) return;
+  // --- full tier: pointwise minimum of the old list and the incoming interval, sampled.
+  std::vector<double> xs;
+  const int uniform = 32;
+  for (int k = 0; k <= uniform; ++k) xs.push_back(e.edgeLength * k / uniform);
+  for (const Interval& w : e.after) xs.push_back(0.5 * (w.b0 + w.b1));
+  for (const Interval& w : e.before) xs.push_back(0.5 * (w.b0 + w.b1));
+  xs.push_back(0.5 * (e.incoming.b0 + e.incoming.b1));
+  double worst = 0.0;
+  std::string where;
+  // Each function counts where it covers x up to the slack step 4 may sew (ε, or a flat vertex's
+  // shadow at that distance): a sewn end is part of the repaired list by contract.
+  const double tiny = tol::kTinyIntervalRel * e.edgeLength;
+  auto valueWithSlack = [&](const Interval& w, double x) {
+    const double v = w.distanceAt(x);
+    const double slack = std::max(tiny, tol::kFlatVertexAngle * v);
+    return x >= w.b0 - slack && x <= w.b1 + slack ? v : INFINITY;
+  };
+  auto insideRemovedTiny = [&](double x) {
+    for (const auto& [lo, hi] : e.report.removedTiny)
+      if (x >= lo - tiny && x <= hi + tiny) return true;
+    return false;
+  };
+  for (double x : xs) {
+    if (insideRemovedTiny(x)) continue;
+    double expected = valueWithSlack(e.incoming, x);
+    for (const Interval& w : e.before) expected = std::min(expected, valueWithSlack(w, x));
+    const double got = listDistance(e.after, x);
+    if (!std::isfinite(expected) && !std::isfinite(got)) continue;
+    const double scale = (std::isfinite(expected) ? expected : got) + e.edgeLength;
+    const double err = std::isfinite(expected) && std::isfinite(got) ? std::abs(got - expected) / scale : INFINITY;
+    if (!(err <= worst)) {
+      worst = err;
+      std::ostringstream os;
+      os << std::setprecision(17) << "at x = " << x << " the list gives " << got
+         << " but min(before, incoming) is " << expected;
+      where = os.str();
+    }
+  }
+  record(PointwiseMin, worst <= tol::kPointwiseMinRel, worst, where, &e);
+}
+
+void InvariantChecker::onFinish(const GeodesicSolver& solver) {
+  if (level_ != CheckLevel::Full) return;
+  const Mesh& mesh = solver.mesh();
+  const auto d = solver.vertexDistances();
+  const bool ranToEnd = !std::isfinite(solver.stats().radius);
+  std::vector<char> sourceComponent(mesh.numComponents() + 1, 0);
+  for (const ResolvedPoint& s : solver.sources()) {
+    Index v = kNoIndex;
+    if (s.kind == SurfacePoint::Kind::Vertex) v = s.element;
+    else if (s.kind == SurfacePoint::Kind::Edge) v = mesh.edge(s.element).vertex[0];
+    else v = mesh.face(s.element)[0];
+    if (mesh.isReferenced(v)) sourceComponent[mesh.componentOf(v)] = 1;
+  }
+  for (Index e = 0; e < mesh.numEdges(); ++e) {
+    const Edge& E = mesh.edge(e);
+    const auto list = solver.edgeIntervals()[e].intervals();
+    if (ranToEnd && sourceComponent[mesh.componentOf(E.vertex[0])]) {
+      bool covered = !list.empty() && list.front().b0 == 0.0 && list.back().b1 == E.length;
+      for (std::size_t i = 0; covered && i + 1 < list.size(); ++i) covered = list[i].b1 == list[i + 1].b0;
+      std::ostringstream os;
+      os << "edge " << e << " (" << E.vertex[0] << "-" << E.vertex[1] << ") is not fully covered by its "
+         << list.size() << " intervals";
+      record(FullCoverage, covered, 0.0, os.str(), nullptr);
+    }
+    for (int k = 0; k < 2; ++k) {
+      const Index v = E.vertex[k];
+      if (!std::isfinite(d[v]) || list.empty()) continue;
+      const double x = k == 0 ? 0.0 : E.length;
+      const double got = listDistance(list, x);
+      if (!std::isfinite(got)) continue;  // not covered: reported by full-coverage
+      const double err = std::abs(got - d[v]) / (d[v] + E.length);
+      std::ostringstream os;
+      os << std::setprecision(17) << "vertex " << v << " has distance " << d[v] << " but edge " << e
+         << " gives " << got << " there";
+      record(VertexAgreement, err <= tol::kContinuityRel, err, os.str(), nullptr);
+    }
+  }
+}
+
+void writeReproducer(const InvariantViolation& v, const std::string& path) {
+  std::ofstream out(path);
+  out << std::setprecision(17);
+  out << "# geodex edge-update reproducer: " << v.what() << "\n";
+  out << "geodex-edge-update 1\n";
+  out << "invariant " << v.invariant() << "\n";
+  out << "branch " << v.branch << "\n";
+  out << "edge-length " << v.edgeLength << "\n";
+  auto put = [&](const char* tag, const Interval& w) {
+    out << tag << " " << w.b0 << " " << w.b1 << " " << w.source.x() << " " << w.source.y() << " "
+        << w.sigma << " " << int(w.side) << "\n";
+  };
+  out << "before " << v.before.size() << "\n";
+  for (const Interval& w : v.before) put("interval", w);
+  put("incoming", v.incoming);
+}
+
+}  // namespace geodex::verify
