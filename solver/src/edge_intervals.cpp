@@ -91,7 +91,8 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, Interval
                "incoming interval [" << incoming.b0 << ", " << incoming.b1 << "] not inside [0, "
                                      << edgeLength << "]");
   report.clear();
-  const double tiny = tol::kTinyIntervalRel * edgeLength;
+  // Bisection (D4) stops well below the smallest ε any interval on this edge can have.
+  const double bisectionResolution = 1e-3 * tol::kTinyIntervalRel * edgeLength;
   Interval in = incoming;
   bool incomingIdUsed = false;
   auto newPiece = [&](double lo, double hi) {
@@ -117,7 +118,8 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, Interval
         split.push_back(w);
         continue;
       }
-      if (w.b0 < in.b0 && w.b1 - in.b0 < tiny && w.b1 < in.b1) {  // D2 at the new one's start
+      const double overlapTiny = std::max(tinyLength(w, edgeLength), tinyLength(in, edgeLength));
+      if (w.b0 < in.b0 && w.b1 - in.b0 < overlapTiny && w.b1 < in.b1) {  // D2 at the new one's start
         ++report.degeneracies[DegeneracyKind::D2];
         const double mid = 0.5 * (in.b0 + w.b1);
         w.b1 = mid;
@@ -126,7 +128,7 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, Interval
         split.push_back(w);
         continue;
       }
-      if (w.b1 > in.b1 && in.b1 - w.b0 < tiny && w.b0 > in.b0) {  // D2 at the new one's end
+      if (w.b1 > in.b1 && in.b1 - w.b0 < overlapTiny && w.b0 > in.b0) {  // D2 at the new one's end
         ++report.degeneracies[DegeneracyKind::D2];
         const double mid = 0.5 * (in.b1 + w.b0);
         w.b0 = mid;
@@ -179,40 +181,74 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, Interval
         out.push_back(old);
         continue;
       }
-      double bp[4];
-      int n = 0;
-      bp[n++] = old.b0;
-      n += equalDistanceCandidates(in, old, old.b0, old.b1, bp + 1);
-      bp[n++] = old.b1;
-      bool wins[3];
-      for (int k = 0; k + 1 < n; ++k) wins[k] = incomingWins(in, old, 0.5 * (bp[k] + bp[k + 1]));
-      // Collapse runs with the same winner; polish each remaining breakpoint (D4).
-      double cut[4];
-      bool cutWins[3];
+      // Eq. 1's roots only *propose* where the winner may change: with σ or the source distance
+      // many orders above the edge length its coefficients cancel, and a root can be off or
+      // missing. The winner is decided by evaluating both distances, at the piece's ends and at
+      // the middle of each sub-range the roots delimit; where it changes between two samples, a
+      // root that lies there and makes the distances agree is the breakpoint, else (D4) the
+      // change is located by bisection.
+      double roots[2];
+      int numRoots = equalDistanceCandidates(in, old, old.b0, old.b1, roots);
+      const double pieceTiny = std::max(tinyLength(in, edgeLength), tinyLength(old, edgeLength));
+      if (numRoots == 2 && roots[1] - roots[0] <= pieceTiny) {  // a double root: tangent functions
+        roots[0] = 0.5 * (roots[0] + roots[1]);
+        numRoots = 1;
+      }
+      double sample[5];
+      int numSamples = 0;
+      sample[numSamples++] = old.b0;
+      {
+        double prev = old.b0;
+        for (int k = 0; k <= numRoots; ++k) {
+          const double next = k < numRoots ? roots[k] : old.b1;
+          sample[numSamples++] = 0.5 * (prev + next);
+          prev = next;
+        }
+      }
+      sample[numSamples++] = old.b1;
+      bool wins[5];
+      for (int k = 0; k < numSamples; ++k) wins[k] = incomingWins(in, old, sample[k]);
+      // Where the two distances agree at an end of the piece (both windows through the same
+      // point, typically a vertex or a shared boundary ray), the tie there says nothing about
+      // the inside: the end takes the verdict of the sample next to it.
+      auto agreeAt = [&](double x) {
+        const double g = old.distanceAt(x);
+        return std::abs(in.distanceAt(x) - g) <= tol::kContinuityRel * (g + edgeLength);
+      };
+      if (agreeAt(old.b0)) wins[0] = wins[1];
+      if (agreeAt(old.b1)) wins[numSamples - 1] = wins[numSamples - 2];
+      double cut[6];
+      bool cutWins[5];
       int m = 0;
-      cut[m] = bp[0];
-      cutWins[m] = wins[0];
-      for (int k = 1; k + 1 < n; ++k) {
+      cut[0] = old.b0;
+      cutWins[0] = wins[0];
+      for (int k = 1; k < numSamples; ++k) {
         if (wins[k] == cutWins[m]) continue;
-        double x = bp[k];
-        const double f = in.distanceAt(x), g = old.distanceAt(x);
-        if (std::abs(f - g) > tol::kContinuityRel * (g + edgeLength)) {
-          // D4: the quadratic's root is off (a near-double root). Bisect the winner predicate
-          // between the neighbouring sub-range midpoints, where it is known to differ.
-          ++report.degeneracies[DegeneracyKind::D4];
-          double lo = 0.5 * (bp[k - 1] + bp[k]), hi = 0.5 * (bp[k] + bp[k + 1]);
+        const double lo0 = sample[k - 1], hi0 = sample[k];
+        double x = -1.0;
+        for (int r = 0; r < numRoots; ++r) {
+          if (roots[r] <= lo0 || roots[r] >= hi0) continue;
+          const double f = in.distanceAt(roots[r]), g = old.distanceAt(roots[r]);
+          if (std::abs(f - g) <= tol::kContinuityRel * (g + edgeLength)) x = roots[r];
+        }
+        if (x < 0.0) {  // no accurate root between two samples with different winners
+          double lo = lo0, hi = hi0;
           const bool loWins = wins[k - 1];
-          for (int it = 0; it < 100 && hi - lo > tiny * 1e-3; ++it) {
+          for (int it = 0; it < 200 && hi - lo > bisectionResolution; ++it) {
             const double mid = 0.5 * (lo + hi);
             (incomingWins(in, old, mid) == loWins ? lo : hi) = mid;
           }
           x = 0.5 * (lo + hi);
+          // D4 if the change is a real crossing inside the piece. One within ε of the piece's
+          // end is the two functions meeting there (e.g. both through the same vertex), which
+          // Eq. 1 need not resolve: the sliver it leaves is step 3's (D1).
+          if (x - old.b0 > pieceTiny && old.b1 - x > pieceTiny) ++report.degeneracies[DegeneracyKind::D4];
         }
         report.eq1Breakpoints.push_back(x);
         cut[++m] = x;
         cutWins[m] = wins[k];
       }
-      cut[++m] = bp[n - 1];
+      cut[++m] = old.b1;
       bool oldIdUsed = false;
       for (int k = 0; k < m; ++k) {
         if (cutWins[k]) {
@@ -241,25 +277,45 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, Interval
   std::vector<Interval>& L = list_;
 
   // --- Step 3: remove tiny intervals (D1), merging each into a neighbour that touches it. The
-  //     grown neighbour keeps its propagated range, so the tiny part still gets propagated.
-  {
+  //     grown neighbour keeps its propagated range, so the tiny part still gets propagated. A
+  //     neighbour grown this way may itself still be tiny next to a coarser one: repeat until
+  //     nothing is (each pass removes at least one interval, so this ends).
+  for (bool removed = true; removed;) {
+    removed = false;
     std::size_t w = 0;
     for (std::size_t r = 0; r < L.size(); ++r) {
+      // ε against the neighbours L[r] will have: the last one kept (L[w − 1]) and the next.
+      double tiny = tinyLength(L[r], edgeLength);
+      if (w > 0) {
+        const double t = tinyLength(L[w - 1], edgeLength);
+        if (L[w - 1].b1 >= L[r].b0 - t) tiny = std::max(tiny, t);
+      }
+      if (r + 1 < L.size()) {
+        const double t = tinyLength(L[r + 1], edgeLength);
+        if (L[r + 1].b0 <= L[r].b1 + t) tiny = std::max(tiny, t);
+      }
       if (L[r].length() >= tiny) {
         L[w++] = L[r];
         continue;
       }
+      removed = true;
       ++report.degeneracies[DegeneracyKind::D1];
-      const Interval& t = L[r];
+      const Interval t = L[r];
       report.removedTiny.emplace_back(t.b0, t.b1);
-      if (w > 0 && L[w - 1].b1 >= t.b0 - tiny) {
-        Interval& prev = L[w - 1];
-        if (t.fullyPropagated() && prev.pb1 >= prev.b1 && !prev.nothingPropagated()) prev.pb1 = t.b1;
-        prev.b1 = std::max(prev.b1, t.b1);
-      } else if (r + 1 < L.size() && L[r + 1].b0 <= t.b1 + tiny) {
+      // Prefer the neighbour with the coarser scale: merging into the same-scale one would only
+      // leave a sliver as thin as before beside the coarse one.
+      const bool prevTouches = w > 0 && L[w - 1].b1 >= t.b0 - tiny;
+      const bool nextTouches = r + 1 < L.size() && L[r + 1].b0 <= t.b1 + tiny;
+      const bool intoNext = nextTouches && (!prevTouches || tinyLength(L[r + 1], edgeLength) >
+                                                                 tinyLength(L[w - 1], edgeLength));
+      if (intoNext) {
         Interval& next = L[r + 1];
         if (t.fullyPropagated() && next.pb0 <= next.b0 && !next.nothingPropagated()) next.pb0 = t.b0;
         next.b0 = std::min(next.b0, t.b0);
+      } else if (prevTouches) {
+        Interval& prev = L[w - 1];
+        if (t.fullyPropagated() && prev.pb1 >= prev.b1 && !prev.nothingPropagated()) prev.pb1 = t.b1;
+        prev.b1 = std::max(prev.b1, t.b1);
       }
     }
     L.resize(w);
@@ -268,17 +324,18 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, Interval
   // --- Step 4: sew gaps shorter than ε at their midpoint (D3); an overlap left here (D2) is
   //     resolved the same way. The edge's ends count as neighbours.
   if (!L.empty()) {
-    if (L.front().b0 > 0.0 && L.front().b0 < tiny) {
+    if (L.front().b0 > 0.0 && L.front().b0 < tinyLength(L.front(), edgeLength)) {
       ++report.degeneracies[DegeneracyKind::D3];
       L.front().b0 = 0.0;
     }
-    if (L.back().b1 < edgeLength && edgeLength - L.back().b1 < tiny) {
+    if (L.back().b1 < edgeLength && edgeLength - L.back().b1 < tinyLength(L.back(), edgeLength)) {
       ++report.degeneracies[DegeneracyKind::D3];
       L.back().b1 = edgeLength;
     }
     for (std::size_t k = 0; k + 1 < L.size(); ++k) {
       const double gap = L[k + 1].b0 - L[k].b1;
       if (gap == 0.0) continue;
+      const double tiny = std::max(tinyLength(L[k], edgeLength), tinyLength(L[k + 1], edgeLength));
       if (gap > 0.0) {
         // The shadow a flat vertex leaves grows with the distance (see tol::kFlatVertexAngle).
         const double shadow = tol::kFlatVertexAngle *

@@ -39,7 +39,7 @@ Mesh::Mesh(TriangleSoup soup) : soup_(std::move(soup)) {
 
   // ===  Refuse what has no unfolding ==========================================================
   for (std::size_t v = 0; v < nv; ++v) {
-    if (!P[v].allFinite()) {
+    if (!isFinite(P[v])) {
       throw InputError("non-finite-coordinate", where(soup_, soup_.vertexLines, v) + "vertex " +
                                                     std::to_string(v) +
                                                     " has a non-finite coordinate");

@@ -400,10 +400,10 @@ void parseObj(std::string_view bytes, SoupBuilder& builder) {
 
 // ===  OFF  ======================================================================================
 
-/// Smallest bytes any element line can take ("0\n"): counts beyond that are impossible. Valid
-/// vertex ("0 0 0\n") and triangle ("3 0 1 2\n") lines take more, which caps reserve() tighter
-/// while a count only a little too high still gets the precise "file ends after ..." error.
-constexpr std::uint64_t kMinOffLineBytes = 2;
+/// Counts above one element per remaining byte are refused at once as absurd (every line takes
+/// at least two). Counts a little too high for a truncated file instead run into the precise
+/// "file ends after ..." error, the common case. Valid vertex ("0 0 0\n") and triangle
+/// ("3 0 1 2\n") lines are longer still, which caps reserve() tighter.
 constexpr std::uint64_t kMinOffVertexBytes = 6;
 constexpr std::uint64_t kMinOffFaceBytes = 8;
 
@@ -466,8 +466,7 @@ void parseOff(std::string_view bytes, SoupBuilder& builder) {
   const auto numVertices = static_cast<std::uint64_t>(counts[0]);
   const auto numFaces = static_cast<std::uint64_t>(counts[1]);
   const std::uint64_t budget = lines.remainingBytes() + 1;  // the last newline may be missing
-  if (numVertices > budget / kMinOffLineBytes ||
-      numFaces > budget / kMinOffLineBytes - numVertices) {
+  if (numVertices > budget || numFaces > budget - numVertices) {
     builder.fail("absurd-count", countsLine,
                  "the counts announce " + std::to_string(numVertices) + " vertices and " +
                      std::to_string(numFaces) + " faces, but only " +
@@ -777,7 +776,9 @@ PlyHeader parsePlyHeader(LineReader& lines, const SoupBuilder& builder) {
   if (header.faceElement < 0) builder.fail("syntax", lines.lineNumber(), "no face element");
   if (header.elements[header.vertexElement].count >= kMaxElements) {
     builder.fail("absurd-count", header.elements[header.vertexElement].line,
-                 "more vertices than 32-bit indices can address");
+                 "the header announces " +
+                     std::to_string(header.elements[header.vertexElement].count) +
+                     " vertices, more than 32-bit indices can address");
   }
   return header;
 }
@@ -1173,7 +1174,7 @@ void validateMesh(const TriangleSoup& soup, std::vector<MeshIssue>& issues) {
   Finding nonFinite;
   std::vector<std::uint8_t> finite(numVertices, 0);
   for (std::size_t v = 0; v < numVertices; ++v) {
-    finite[v] = positions[v].allFinite() ? 1 : 0;
+    finite[v] = isFinite(positions[v]) ? 1 : 0;
     if (finite[v]) continue;
     nonFinite.add([&](bool full) {
       return full ? name.atVertex(v) + "vertex " + std::to_string(v) +

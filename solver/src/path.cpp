@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "geodex/check.h"
 #include "geodex/geodesic_solver.h"
@@ -79,9 +80,17 @@ GeodesicPath GeodesicSolver::path(const SurfacePoint& target) const {
 
   // Go from `from` (a point on edge `e` at x, or its vertex) into face g towards window w's
   // source; returns the next state (the exit point on another edge of g, or the pseudo-source).
-  auto walk = [&](Index e, double x, Index g, const Interval& w) -> State {
+  auto walk = [&](Index e, double x, Index g, const Interval& w) -> std::optional<State> {
     const FaceFrame& fr = mesh_.frame(g, e);
     const Edge& E = mesh_.edge(e);
+    const double scale = std::max(E.length, fr.apexPos.norm());
+    if (w.source.y() <= tol::kCoincideRel * scale) {
+      // The source is on the edge's own line (G1, G4, G5 windows): the path runs along the edge.
+      if (w.source.x() <= tol::kCoincideRel * scale && x > 0.0)
+        return State{At::Vertex, E.vertex[0], 0.0, mesh_.position(E.vertex[0])};
+      if (w.source.x() >= E.length - tol::kCoincideRel * scale && x < E.length)
+        return State{At::Vertex, E.vertex[1], 0.0, mesh_.position(E.vertex[1])};
+    }
     const Vec2 p(x, 0.0), s(w.source.x(), w.source.y());  // source on g's side: above the axis
     const Vec2 v0(0.0, 0.0), v1 = fr.apexPos, v2(E.length, 0.0);
     const Vec2 d = s - p;
@@ -101,21 +110,27 @@ GeodesicPath GeodesicSolver::path(const SurfacePoint& target) const {
         exitT = std::clamp(tt, 0.0, 1.0);
       }
     }
-    if (exitEdge == 0 || bestU >= 1.0 - 1e-12) {  // the pseudo-source is in (or on) face g
+    if (exitEdge == 0 || bestU >= 1.0 - 1e-12) {
+      // The pseudo-source must then be in (or on) face g; if it is not, the direction towards it
+      // leaves g at once (a window that covers this point but does not see it through g).
+      const double tolIn = -1e-9 * scale;
+      const bool inside = pred::cross(v1 - v0, s - v0) <= -tolIn * scale &&
+                          pred::cross(v2 - v1, s - v1) <= -tolIn * scale && s.y() >= tolIn;
+      if (!inside) return std::nullopt;
       if (w.origin < 0) {
         const std::size_t n = static_cast<std::size_t>(-(w.origin + 1));
-        return {At::Source, static_cast<Index>(n), 0.0, sources_[n].position};
+        return State{At::Source, static_cast<Index>(n), 0.0, sources_[n].position};
       }
-      return {At::Vertex, static_cast<Index>(w.origin), 0.0, mesh_.position(w.origin)};
+      return State{At::Vertex, static_cast<Index>(w.origin), 0.0, mesh_.position(w.origin)};
     }
     const Index ex = exitEdge == 1 ? fr.edgeToV0 : fr.edgeToV2;
     const Index from = exitEdge == 1 ? E.vertex[0] : fr.apex;
     const Edge& X = mesh_.edge(ex);
     const double along = X.vertex[0] == from ? exitT : 1.0 - exitT;
     const double snap = tol::kCoincideRel * 1e3;
-    if (along <= snap) return {At::Vertex, X.vertex[0], 0.0, mesh_.position(X.vertex[0])};
-    if (along >= 1.0 - snap) return {At::Vertex, X.vertex[1], 0.0, mesh_.position(X.vertex[1])};
-    return {At::Edge, ex, along * X.length, edgePoint(mesh_, ex, along * X.length)};
+    if (along <= snap) return State{At::Vertex, X.vertex[0], 0.0, mesh_.position(X.vertex[0])};
+    if (along >= 1.0 - snap) return State{At::Vertex, X.vertex[1], 0.0, mesh_.position(X.vertex[1])};
+    return State{At::Edge, ex, along * X.length, edgePoint(mesh_, ex, along * X.length)};
   };
 
   Index cameFromFace = kNoIndex;
@@ -132,9 +147,11 @@ GeodesicPath GeodesicSolver::path(const SurfacePoint& target) const {
       if (w.origin >= 0 && static_cast<Index>(w.origin) == excludeVertex) return;
       const double value = w.distanceAt(x);
       if (value < best) {
-        best = value;
-        next = walk(e, x, g, w);
-        nextFace = g;
+        if (const auto step = walk(e, x, g, w)) {
+          best = value;
+          next = *step;
+          nextFace = g;
+        }
       }
     };
     switch (cur.at) {

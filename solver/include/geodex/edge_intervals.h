@@ -12,6 +12,8 @@
 // D4 (the two distances differ at a shared endpoint made by Eq. 1) is repaired in step 2, by
 // polishing the root on the exact difference of the two distance functions.
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <span>
 #include <utility>
@@ -19,6 +21,7 @@
 
 #include "geodex/degeneracy.h"
 #include "geodex/interval.h"
+#include "geodex/tolerance.h"
 
 namespace geodex {
 
@@ -42,6 +45,33 @@ struct EdgeUpdateReport {
     degeneracies = {};
   }
 };
+
+/// The length the ε of D1–D3 is relative to for interval w on an edge of length L (see
+/// tol::kTinyIntervalRel): the edge length or, when larger, the distance of the pseudo-source.
+inline double intervalLengthScale(const Interval& w, double edgeLength) {
+  return std::max(edgeLength, std::abs(w.source.x()) + w.source.y());
+}
+/// ε for interval w: shorter intervals are D1, shorter gaps next to it D3.
+inline double tinyLength(const Interval& w, double edgeLength) {
+  return tol::kTinyIntervalRel * intervalLengthScale(w, edgeLength);
+}
+
+/// ε for the i-th interval of a sorted list: its ends may have been cast by its neighbours, so
+/// the larger scale of itself and the neighbours it touches counts (a sliver left between a near
+/// window and one from a source 1e5 edge lengths away is only known to ~1e-11 × 1e5 × edge).
+/// A neighbour counts when it touches or is within its own ε of touching (step 4 will sew it).
+inline double tinyLengthInList(std::span<const Interval> list, std::size_t i, double edgeLength) {
+  double tiny = tinyLength(list[i], edgeLength);
+  if (i > 0) {
+    const double t = tinyLength(list[i - 1], edgeLength);
+    if (list[i - 1].b1 >= list[i].b0 - t) tiny = std::max(tiny, t);
+  }
+  if (i + 1 < list.size()) {
+    const double t = tinyLength(list[i + 1], edgeLength);
+    if (list[i + 1].b0 <= list[i].b1 + t) tiny = std::max(tiny, t);
+  }
+  return tiny;
+}
 
 /// Hands out interval ids unique within a solve.
 struct IntervalIdSource {

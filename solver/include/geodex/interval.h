@@ -51,8 +51,10 @@ struct Interval {
     const double dx = x - source.x();
     return sigma + std::sqrt(dx * dx + source.y() * source.y());
   }
-  double d0() const { return distanceAt(b0) - sigma; }
-  double d1() const { return distanceAt(b1) - sigma; }
+  /// Distance from the pseudo-source to b0 (b1); computed directly, not as distanceAt − σ, which
+  /// would cancel when σ is large.
+  double d0() const { return std::hypot(b0 - source.x(), source.y()); }
+  double d1() const { return std::hypot(b1 - source.x(), source.y()); }
   /// Smallest distance over [b0, b1]: the priority-queue key.
   double minDistance() const {
     const double x = source.x() < b0 ? b0 : (source.x() > b1 ? b1 : source.x());

@@ -9,6 +9,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -20,6 +21,15 @@ using Vec2 = Eigen::Vector2d;
 using Vec3 = Eigen::Vector3d;
 using Index = std::uint32_t;
 inline constexpr Index kNoIndex = ~Index{0};
+
+/// True if every coordinate is finite. (Eigen's allFinite() computes x − x, which raises the
+/// invalid-operation trap on ±inf in debug test runs; this does not.)
+template <typename Vector>
+bool isFinite(const Vector& p) {
+  for (int i = 0; i < p.size(); ++i)
+    if (!std::isfinite(p[i])) return false;
+  return true;
+}
 
 /// Triangles and positions before connectivity is built (what the readers produce).
 struct TriangleSoup {

@@ -25,9 +25,14 @@ inline constexpr double kFlatFaceRel = 1e-12;
 
 // ===  Geodesic discontinuities (Sect. 3.2 and 4.2, Algorithm 2 steps 3–5) =====================
 
-/// D1: intervals shorter than this × edge length are removed (merged into a neighbour).
-/// D3: gaps shorter than this × edge length, or than kFlatVertexAngle × the distance there, are
-///     sewn at their midpoint.
+/// D1: intervals shorter than this × their length scale are removed (merged into a neighbour).
+/// D3: gaps shorter than this × the neighbours' length scale, or than kFlatVertexAngle × the
+///     distance there, are sewn at their midpoint.
+/// The length scale of an interval is max(edge length, distance from its pseudo-source to the
+/// edge): its ends come from rays cast from that source, so they carry rounding of ~1e-16 × that
+/// distance. (A window from a source 1e5 edge lengths away has ends good to ~1e-11 × the edge
+/// only; measured on tests/unit/geodesic_solver_test.cpp's far-source patch.) See
+/// intervalLengthScale() in edge_intervals.h.
 /// D2: overlaps up to this × edge length are resolved at their midpoint; larger ones are bugs.
 inline constexpr double kTinyIntervalRel = 1e-11;
 
@@ -78,6 +83,12 @@ inline constexpr double kSnapParam = 1e-12;
 /// contract — a breakpoint left with a mismatch up to kContinuityRel, a tiny interval or gap
 /// (kTinyIntervalRel) absorbed by a neighbour on either side, a flat-vertex shadow sewn
 /// (kFlatVertexAngle × distance), and a tie not taken (kTieRel).
+/// Rounding of one computed distance σ + |x − s|, relative to its value (a few ulps, 2.2e-16
+/// each). A check comparing two computed distances of size D (e.g. the triangle inequality
+/// |d0 − d1| ≤ b1 − b0 of a real source) must allow this × D: with a source 1e7 away one ulp is
+/// already 2e-9, far above ε × edge length.
+inline constexpr double kRoundingRel = 1e-14;
+
 inline constexpr double kPointwiseMinRel =
     kContinuityRel + 2.0 * kTinyIntervalRel + 2.0 * kFlatVertexAngle + kTieRel;
 

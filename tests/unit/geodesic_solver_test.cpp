@@ -1,0 +1,302 @@
+// Whole solves against oracles that share nothing with the solver (issue 2 acceptance 1, 2, 5):
+// Euclidean distance on planar convex meshes, visibility-graph shortest paths on planar
+// non-convex domains, and the solver's API contract. The full-tier invariant checker watches
+// every solve.
+#include "geodex/geodesic_solver.h"
+#include "geodex/error.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "geodex/verify/invariant_checker.h"
+#include "geodex/verify/mesh_generators.h"
+#include "geodex/verify/oracles.h"
+
+namespace geodex {
+namespace {
+
+using verify::DiagonalPattern;
+
+// Solves with the full-tier checker attached; fails the test on any violation.
+std::vector<double> solveChecked(const Mesh& mesh, const std::vector<SurfacePoint>& sources,
+                                 DegeneracyCounters* counters = nullptr) {
+  GeodesicSolver solver(mesh);
+  verify::InvariantChecker checker(verify::CheckLevel::Full, /*throwOnViolation=*/false);
+  solver.setObserver(&checker);
+  solver.solve(sources);
+  if (const auto* v = checker.firstViolation()) ADD_FAILURE() << v->what();
+  if (counters != nullptr) *counters += solver.counters();
+  const auto d = solver.vertexDistances();
+  return {d.begin(), d.end()};
+}
+
+// A vertex near the middle, a point on an edge of a face near the middle, a point in that face.
+std::vector<SurfacePoint> vertexEdgeFaceSources(const TriangleSoup& soup) {
+  Vec3 centre = Vec3::Zero();
+  for (const Vec3& p : soup.positions) centre += p;
+  centre /= double(soup.positions.size());
+  Index bestV = 0;
+  for (Index v = 0; v < soup.positions.size(); ++v)
+    if ((soup.positions[v] - centre).norm() < (soup.positions[bestV] - centre).norm()) bestV = v;
+  Index bestF = 0;
+  auto faceCentre = [&](Index f) {
+    const auto& t = soup.faces[f];
+    return (soup.positions[t[0]] + soup.positions[t[1]] + soup.positions[t[2]]) / 3.0;
+  };
+  for (Index f = 0; f < soup.faces.size(); ++f)
+    if ((faceCentre(f) - centre).norm() < (faceCentre(bestF) - centre).norm()) bestF = f;
+  const auto& t = soup.faces[bestF];
+  return {SurfacePoint::atVertex(bestV), SurfacePoint::onEdge(t[0], t[1], 0.3),
+          SurfacePoint::inFace(bestF, 0.2, 0.3, 0.5)};
+}
+
+void expectEuclidean(const std::string& name, const TriangleSoup& soup, double relTol = 1e-9) {
+  const Mesh mesh(soup);
+  for (const SurfacePoint& source : vertexEdgeFaceSources(soup)) {
+    const std::vector<double> d = solveChecked(mesh, {source});
+    const auto euclid =
+        verify::euclideanDistances(soup.positions, verify::surfacePointPosition(soup, source));
+    double worst = 0.0;
+    for (std::size_t v = 0; v < d.size(); ++v) worst = std::max(worst, std::abs(d[v] - euclid[v]));
+    EXPECT_LE(worst, relTol * mesh.boundingBoxDiagonal())
+        << name << ", source " << formatSurfacePoint(source);
+  }
+}
+
+// ===  Acceptance 1: planar convex meshes give Euclidean distances ===============================
+
+TEST(PlanarConvex, GridAllDiagonalsOneWay) {
+  expectEuclidean("grid", verify::gridMesh(30, 30, 1.0, 1.0, DiagonalPattern::AllOneWay));
+}
+TEST(PlanarConvex, GridAlternatingDiagonals) {
+  expectEuclidean("grid-alt", verify::gridMesh(30, 30, 1.0, 1.0, DiagonalPattern::Alternating));
+}
+TEST(PlanarConvex, JitteredGrid) {
+  expectEuclidean("jittered", verify::jitteredGridMesh(30, 30, 1.0, 1.0, 0.15, 42));
+}
+TEST(PlanarConvex, FanOfNeedles) {
+  // 1000 needles with an apex angle of 1e-6 rad: the reference MMP is off by ~9e-5 here.
+  const TriangleSoup fan = verify::needleFanMesh(1000, 1e-6, 1.0);
+  const Mesh mesh(fan);
+  const std::vector<SurfacePoint> sources{SurfacePoint::atVertex(0), SurfacePoint::atVertex(500),
+                                          SurfacePoint::inFace(300, 0.2, 0.3, 0.5)};
+  for (const SurfacePoint& source : sources) {
+    const std::vector<double> d = solveChecked(mesh, {source});
+    const auto euclid = verify::euclideanDistances(fan.positions, verify::surfacePointPosition(fan, source));
+    double worst = 0.0;
+    for (std::size_t v = 0; v < d.size(); ++v) worst = std::max(worst, std::abs(d[v] - euclid[v]));
+    EXPECT_LE(worst, 1e-9 * mesh.boundingBoxDiagonal()) << formatSurfacePoint(source);
+  }
+}
+TEST(PlanarConvex, ScaledByOneMillionthAndOneMillion) {
+  for (double scale : {1e-6, 1e6}) {
+    TriangleSoup soup = verify::jitteredGridMesh(12, 12, 1.0, 1.0, 0.1, 7);
+    for (Vec3& p : soup.positions) p *= scale;
+    expectEuclidean("scaled", soup);
+  }
+}
+
+// ===  Acceptance 2: planar non-convex domains, against visibility-graph shortest paths ==========
+
+void expectPlanarDomain(const std::string& name, const TriangleSoup& soup) {
+  const Mesh mesh(soup);
+  const auto boundary = verify::planarBoundaryPolygons(soup);
+  const auto queries = verify::planarPositions(soup);
+  for (const SurfacePoint& source : vertexEdgeFaceSources(soup)) {
+    const Vec3 s3 = verify::surfacePointPosition(soup, source);
+    const auto exact = verify::planarDomainDistances(boundary, Vec2(s3.x(), s3.y()), queries);
+    const std::vector<double> d = solveChecked(mesh, {source});
+    double worst = 0.0;
+    for (std::size_t v = 0; v < d.size(); ++v) worst = std::max(worst, std::abs(d[v] - exact[v]));
+    EXPECT_LE(worst, 1e-9 * mesh.boundingBoxDiagonal()) << name << " " << formatSurfacePoint(source);
+  }
+  // A source in a corner, so that many paths bend around reflex vertices.
+  const auto exact = verify::planarDomainDistances(boundary, Vec2(soup.positions[0].x(), soup.positions[0].y()), queries);
+  const std::vector<double> d = solveChecked(mesh, {SurfacePoint::atVertex(0)});
+  for (std::size_t v = 0; v < d.size(); ++v) EXPECT_NEAR(d[v], exact[v], 1e-9 * mesh.boundingBoxDiagonal()) << name << " vertex " << v;
+}
+
+TEST(PlanarNonConvex, LShape) {
+  expectPlanarDomain("L", verify::lShapeMesh(16, 1.0));
+  expectPlanarDomain("L-alt", verify::lShapeMesh(16, 1.0, DiagonalPattern::Alternating));
+}
+TEST(PlanarNonConvex, SquareWithSquareHole) {
+  expectPlanarDomain("hole", verify::squareWithHoleMesh(16, 1.0, 0.5));
+}
+
+// ===  Curved surfaces: bounds ====================================================================
+
+TEST(Bounds, IcosphereBetweenEuclideanAndEdgeGraph) {
+  const TriangleSoup soup = verify::icosphereMesh(3, 1.0);
+  const Mesh mesh(soup);
+  const std::vector<double> d = solveChecked(mesh, {SurfacePoint::atVertex(0)});
+  const auto euclid = verify::euclideanDistances(soup.positions, soup.positions[0]);
+  const auto graph = verify::edgeGraphDijkstra(mesh, std::vector<SurfacePoint>{SurfacePoint::atVertex(0)});
+  EXPECT_TRUE(verify::checkEuclideanLowerBound(d, euclid, 1e-12).ok());
+  EXPECT_TRUE(verify::checkUpperBound(d, graph, 1e-12).ok());
+  EXPECT_TRUE(verify::checkLipschitz(mesh, d, 1e-12).ok());
+  // On a sphere of radius 1 the antipode is π away; the polyhedron is a little shorter.
+  double farthest = 0.0;
+  for (double x : d) farthest = std::max(farthest, x);
+  EXPECT_GT(farthest, 0.95 * std::numbers::pi);
+  EXPECT_LT(farthest, std::numbers::pi);
+}
+
+// ===  Acceptance 5: every degeneracy counter is reached by some input ==========================
+
+// A bumpy 12×12 patch whose y = 0 side is joined by long thin triangles to a vertex `far` away:
+// windows straight from that vertex (σ = 0, source far) meet pseudo-sources of the patch
+// (σ ≈ far, source near), the configuration where Eq. 1's quadratic loses its digits (D4).
+TriangleSoup farSourceBumpyPatch(double far) {
+  verify::SplitMix64 rng(5);
+  const int n = 12;
+  TriangleSoup s = verify::heightFieldMesh(n, n, n, n, [](double, double) { return 0.0; });
+  for (Vec3& p : s.positions)
+    if (p.x() > 0 && p.x() < n && p.y() > 0 && p.y() < n) p.z() = rng.uniform(-0.3, 0.3);
+  const Index apex = static_cast<Index>(s.positions.size());
+  s.positions.push_back(Vec3(n / 2.0, -far, 0.0));
+  for (int i = 0; i < n; ++i) s.faces.push_back({apex, Index(i + 1), Index(i)});
+  return s;
+}
+
+TEST(DegeneracyCounters, EveryCaseIsReachedByTheTestInputs) {
+  DegeneracyCounters total;
+  // Lattice meshes with sources on vertices and edges: collinear rays through vertices (G2–G5),
+  // sources on edge lines (G1), rounding-size overlaps and gaps (D1–D3).
+  for (auto pattern : {DiagonalPattern::AllOneWay, DiagonalPattern::Alternating}) {
+    const TriangleSoup soup = verify::gridMesh(16, 16, 1.0, 1.0, pattern);
+    const Mesh mesh(soup);
+    for (const SurfacePoint& s : vertexEdgeFaceSources(soup)) solveChecked(mesh, {s}, &total);
+    solveChecked(mesh, {SurfacePoint::atVertex(0)}, &total);
+  }
+  {
+    const Mesh mesh(verify::lShapeMesh(16, 1.0));
+    solveChecked(mesh, {SurfacePoint::atVertex(0)}, &total);
+  }
+  {
+    // Integer heights: terraces of coplanar faces with saddle pseudo-sources on lattice points,
+    // whose window boundaries run through further lattice points (G2, G3).
+    const Mesh mesh(verify::quantizedHeightField(24, 24, 9, 3));
+    solveChecked(mesh, {SurfacePoint::atVertex(300)}, &total);
+  }
+  {
+    const Mesh mesh(farSourceBumpyPatch(1e7));
+    solveChecked(mesh, {SurfacePoint::atVertex(static_cast<Index>(mesh.numVertices() - 1))}, &total);
+  }
+  for (std::size_t k = 0; k < kNumDegeneracyKinds; ++k) {
+    EXPECT_GT(total.count[k], 0u) << name(static_cast<DegeneracyKind>(k)) << " never reached";
+  }
+  EXPECT_GT(total.cases, total.geometricTotal());
+}
+
+// ===  API contract ================================================================================
+
+TEST(SolverApi, UnreachableIsInfinityNeverZero) {
+  TriangleSoup soup = verify::gridMesh(3, 3, 1.0, 1.0);
+  const Index offset = static_cast<Index>(soup.positions.size());
+  // A second component and an unreferenced vertex.
+  soup.positions.push_back(Vec3(5, 0, 0));
+  soup.positions.push_back(Vec3(6, 0, 0));
+  soup.positions.push_back(Vec3(5, 1, 0));
+  soup.faces.push_back({offset, offset + 1, offset + 2});
+  soup.positions.push_back(Vec3(9, 9, 9));
+  const Mesh mesh(soup);
+  const auto d = exactGeodesicDistance(mesh, std::vector<SurfacePoint>{SurfacePoint::atVertex(0)});
+  EXPECT_EQ(d[0], 0.0);
+  for (Index v = offset; v < d.size(); ++v) EXPECT_EQ(d[v], kInfinity) << v;
+}
+
+TEST(SolverApi, ReRunningGivesTheSameAsAFreshSolver) {
+  const Mesh mesh(verify::jitteredGridMesh(10, 10, 1.0, 1.0, 0.1, 3));
+  GeodesicSolver reused(mesh);
+  reused.solve(std::vector<SurfacePoint>{SurfacePoint::atVertex(5)});
+  reused.solve(std::vector<SurfacePoint>{SurfacePoint::atVertex(60), SurfacePoint::inFace(7, 0.1, 0.2, 0.7)});
+  GeodesicSolver fresh(mesh);
+  fresh.solve(std::vector<SurfacePoint>{SurfacePoint::atVertex(60), SurfacePoint::inFace(7, 0.1, 0.2, 0.7)});
+  const auto a = reused.vertexDistances(), b = fresh.vertexDistances();
+  for (std::size_t v = 0; v < a.size(); ++v) EXPECT_EQ(a[v], b[v]) << v;
+  EXPECT_EQ(reused.counters().cases, fresh.counters().cases);
+}
+
+TEST(SolverApi, SeveralSourcesGiveTheMinimumOfEach) {
+  const TriangleSoup soup = verify::icosphereMesh(2, 1.0);
+  const Mesh mesh(soup);
+  const std::vector<SurfacePoint> sources{SurfacePoint::atVertex(0), SurfacePoint::atVertex(100),
+                                          SurfacePoint::inFace(50, 0.3, 0.3, 0.4)};
+  const auto together = exactGeodesicDistance(mesh, sources);
+  std::vector<double> expected(mesh.numVertices(), kInfinity);
+  for (const SurfacePoint& s : sources) {
+    const auto one = exactGeodesicDistance(mesh, std::vector<SurfacePoint>{s});
+    for (std::size_t v = 0; v < one.size(); ++v) expected[v] = std::min(expected[v], one[v]);
+  }
+  for (std::size_t v = 0; v < expected.size(); ++v) EXPECT_NEAR(together[v], expected[v], 1e-12) << v;
+}
+
+TEST(SolverApi, StopDistanceGivesExactInsideAndInfinityBeyond) {
+  const TriangleSoup soup = verify::gridMesh(20, 20, 1.0, 1.0);
+  const Mesh mesh(soup);
+  SolveOptions options;
+  options.stopDistance = 0.5;
+  const auto d = exactGeodesicDistance(mesh, std::vector<SurfacePoint>{SurfacePoint::atVertex(0)}, options);
+  for (Index v = 0; v < d.size(); ++v) {
+    const double euclid = soup.positions[v].norm();
+    if (euclid <= 0.5) EXPECT_NEAR(d[v], euclid, 1e-12) << v;
+    else EXPECT_EQ(d[v], kInfinity) << v;
+  }
+}
+
+TEST(SolverApi, TargetsStopEarlyWithTheirDistancesFinal) {
+  const TriangleSoup soup = verify::gridMesh(20, 20, 1.0, 1.0);
+  const Mesh mesh(soup);
+  SolveOptions options;
+  const Index target = 3 * 21 + 4;  // (0.2, 0.15)
+  options.targets = {SurfacePoint::atVertex(target)};
+  GeodesicSolver solver(mesh);
+  solver.solve(std::vector<SurfacePoint>{SurfacePoint::atVertex(0)}, options);
+  EXPECT_NEAR(solver.vertexDistances()[target], soup.positions[target].norm(), 1e-12);
+  EXPECT_EQ(solver.vertexDistances()[21 * 21 - 1], kInfinity) << "the far corner was not needed";
+  EXPECT_LT(solver.stats().radius, 1.0);
+}
+
+TEST(SolverApi, DistanceAtAnyPointAndPathLengthAgree) {
+  const TriangleSoup soup = verify::jitteredGridMesh(10, 10, 1.0, 1.0, 0.12, 11);
+  const Mesh mesh(soup);
+  GeodesicSolver solver(mesh);
+  const SurfacePoint source = SurfacePoint::inFace(20, 0.3, 0.3, 0.4);
+  solver.solve(std::vector<SurfacePoint>{source});
+  const Vec3 s = verify::surfacePointPosition(soup, source);
+  const auto& f = soup.faces[150];
+  for (const SurfacePoint& p : {SurfacePoint::atVertex(99), SurfacePoint::onEdge(f[0], f[1], 0.25),
+                                SurfacePoint::inFace(150, 0.6, 0.3, 0.1)}) {
+    const double expected = (verify::surfacePointPosition(soup, p) - s).norm();
+    EXPECT_NEAR(solver.distance(p), expected, 1e-12) << formatSurfacePoint(p);
+    const GeodesicPath path = solver.path(p);
+    ASSERT_GE(path.points.size(), 2u) << formatSurfacePoint(p);
+    EXPECT_NEAR(path.length, expected, 1e-9) << formatSurfacePoint(p);
+    EXPECT_NEAR((path.points.back().position - s).norm(), 0.0, 1e-12);
+  }
+}
+
+TEST(SolverApi, PathOnACurvedSurfaceHasTheDistanceAsLength) {
+  const Mesh mesh(verify::icosphereMesh(3, 1.0));
+  GeodesicSolver solver(mesh);
+  solver.solve(std::vector<SurfacePoint>{SurfacePoint::atVertex(0)});
+  for (Index v : {Index(7), Index(123), Index(400), Index(641)}) {
+    const GeodesicPath path = solver.path(SurfacePoint::atVertex(v));
+    EXPECT_NEAR(path.length, solver.vertexDistances()[v], 1e-9 * (1 + solver.vertexDistances()[v])) << v;
+  }
+}
+
+TEST(SolverApi, BadSourcesAreRefusedByName) {
+  const Mesh mesh(verify::gridMesh(2, 2, 1.0, 1.0));
+  GeodesicSolver solver(mesh);
+  EXPECT_THROW(solver.solve(std::vector<SurfacePoint>{SurfacePoint::atVertex(99)}), InputError);
+  EXPECT_THROW(solver.solve(std::vector<SurfacePoint>{SurfacePoint::onEdge(0, 8, 0.5)}), InputError);
+  EXPECT_THROW(solver.solve(std::vector<SurfacePoint>{SurfacePoint::inFace(0, 0.5, 0.5, 0.5)}), InputError);
+  EXPECT_THROW(solver.solve(std::vector<SurfacePoint>{SurfacePoint::inFace(99, 1, 0, 0)}), InputError);
+}
+
+}  // namespace
+}  // namespace geodex
