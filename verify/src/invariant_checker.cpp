@@ -23,10 +23,21 @@ std::string describe(const Interval& w) {
   return os.str();
 }
 
+// Index of the last interval with b0 <= x (lists are sorted by b0), or -1.
+std::ptrdiff_t lastStartingBefore(std::span<const Interval> list, double x) {
+  const auto it = std::upper_bound(list.begin(), list.end(), x,
+                                   [](double v, const Interval& w) { return v < w.b0; });
+  return (it - list.begin()) - 1;
+}
+
+// The smallest distance the intervals covering x give. Only the interval starting last before x
+// and its left neighbour can cover x in a sorted list (neighbours share at most an endpoint); a
+// list that is not sorted (a violation reported elsewhere) is scanned whole.
 double listDistance(std::span<const Interval> list, double x) {
   double best = INFINITY;
-  for (const Interval& w : list)
-    if (x >= w.b0 && x <= w.b1) best = std::min(best, w.distanceAt(x));
+  const std::ptrdiff_t k = lastStartingBefore(list, x);
+  for (std::ptrdiff_t i = std::max<std::ptrdiff_t>(0, k - 1); i <= k; ++i)
+    if (x >= list[i].b0 && x <= list[i].b1) best = std::min(best, list[i].distanceAt(x));
   return best;
 }
 
@@ -171,7 +182,12 @@ void InvariantChecker::onEdgeUpdate(const EdgeUpdateEvent& e) {
     // strict: where the functions really are; loose: with the slack step 4 may sew.
     double strict = e.incoming.b0 <= x && x <= e.incoming.b1 ? e.incoming.distanceAt(x) : INFINITY;
     double loose = valueWithSlack(e.incoming, x);
-    for (const Interval& w : e.before) {
+    // The old list is sorted: only intervals next to the one starting last before x can reach x,
+    // even with the sewing slack.
+    const std::ptrdiff_t k = lastStartingBefore(e.before, x);
+    for (std::ptrdiff_t i = std::max<std::ptrdiff_t>(0, k - 1);
+         i <= std::min<std::ptrdiff_t>(k + 1, std::ssize(e.before) - 1); ++i) {
+      const Interval& w = e.before[i];
       if (w.b0 <= x && x <= w.b1) strict = std::min(strict, w.distanceAt(x));
       loose = std::min(loose, valueWithSlack(w, x));
     }

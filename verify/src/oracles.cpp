@@ -553,7 +553,9 @@ CheckReport checkLipschitz(const TriangleSoup& soup, std::span<const double> d, 
     for (Index v : f) box.extend(soup.positions[v]);
   const double scale = soup.faces.empty() ? 0.0 : box.diagonal().norm();
   ReportBuilder report;
-  for (const auto& [a, b] : uniqueEdges(soup)) {
+  for (const auto& ab : uniqueEdges(soup)) {
+    // Plain copies, not structured bindings: clang 14 cannot capture those in the lambda below.
+    const Index a = ab.first, b = ab.second;
     const std::string edge = "edge " + std::to_string(a) + "-" + std::to_string(b);
     if (notADistance(d[a]) || notADistance(d[b])) {
       report.failNaN(edge + ": distances " + formatDouble(d[a]) + " and " + formatDouble(d[b]));

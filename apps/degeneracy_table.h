@@ -1,0 +1,17 @@
+#pragma once
+// The degeneracy table of a solve, in the manner of Liu, Zhou & Hu 2007, Table 1: how often each
+// enumerated case occurred, as a count and as a share of all propagation cases, and the
+// degeneracy rate (G1–G5 over all cases). Used by `geodex distance --stats` and the demo.
+
+#include <iosfwd>
+
+#include "geodex/degeneracy.h"
+
+namespace geodex::cli {
+
+/// Writes the table, one row per kind G1..G5, D1..D4, then the rate line
+///   degeneracy rate (G1–G5 over all cases): X%
+/// and the mesh-level cases the paper leaves out (zero-area faces, sources on an edge's line).
+void writeDegeneracyTable(std::ostream& out, const DegeneracyCounters& counters);
+
+}  // namespace geodex::cli

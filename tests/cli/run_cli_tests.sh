@@ -1,0 +1,329 @@
+#!/usr/bin/env bash
+# Runs one CLI test case against the built `geodex` binary.
+#   run_cli_tests.sh GEODEX DATA_DIR CASE
+# Each case is one CTest test (tests/cli/CMakeLists.txt); `run_cli_tests.sh GEODEX DATA_DIR all`
+# runs every case (handy by hand). Exit 0 = pass; anything else prints what was expected and got.
+set -euo pipefail
+
+GEODEX=$1
+DATA=$2
+CASE=$3
+
+WORK=$(mktemp -d "${TMPDIR:-/tmp}/geodex-cli-test.XXXXXX")
+trap 'rm -rf "$WORK"' EXIT
+
+MESH=$DATA/two_components.off  # square 0-3, triangle 4-6 (second component), vertex 7 unused
+BENT=$DATA/bent_grid.off       # 3x3 grid, raised middle: paths bend
+
+# ===  helpers ===================================================================================
+
+# run ARGS…: runs geodex; sets RC, and OUT / ERR to the files holding stdout / stderr.
+OUT=$WORK/stdout
+ERR=$WORK/stderr
+run() {
+  set +e
+  "$GEODEX" "$@" >"$OUT" 2>"$ERR"
+  RC=$?
+  set -e
+  LAST_CMD="geodex $*"
+}
+
+fail() {
+  echo "FAIL [$CASE]: $*" >&2
+  echo "  command: ${LAST_CMD:-}" >&2
+  echo "  exit code: ${RC:-}" >&2
+  echo "  --- stdout (first 40 lines) ---" >&2
+  head -n 40 "$OUT" >&2 || true
+  echo "  --- stderr (first 40 lines) ---" >&2
+  head -n 40 "$ERR" >&2 || true
+  exit 1
+}
+
+expect_rc() { [[ $RC -eq $1 ]] || fail "expected exit code $1"; }
+# A crash (signal) shows as 128+N; bad input must never get there.
+expect_err() { grep -Eq -- "$1" "$ERR" || fail "stderr should match /$1/"; }
+expect_out() { grep -Eq -- "$1" "$OUT" || fail "stdout should match /$1/"; }
+expect_usage_error() {
+  expect_rc 2
+  expect_err '^error: '
+}
+# line N of FILE
+line() { sed -n "${2}p" "$1"; }
+# expect_close A B TOL: |A - B| <= TOL * max(1, |B|)
+expect_close() {
+  awk -v a="$1" -v b="$2" -v t="$3" 'BEGIN {
+    d = a - b; if (d < 0) d = -d; m = b < 0 ? -b : b; if (m < 1) m = 1;
+    exit !(d <= t * m) }' || fail "expected $1 within $3 of $2"
+}
+
+# ===  cases =====================================================================================
+
+case_help() {
+  run --help
+  expect_rc 0
+  expect_out 'distance'
+  expect_out 'path'
+  expect_out 'info'
+  expect_out 'e:I,J,T'
+  run distance --help
+  expect_rc 0
+  expect_out '--source'
+}
+
+case_usage_no_subcommand() {
+  run
+  expect_usage_error
+}
+
+case_usage_unknown_subcommand() {
+  run frobnicate "$MESH"
+  expect_usage_error
+}
+
+case_usage_unknown_option() {
+  run distance "$MESH" --source v:0 --bogus
+  expect_usage_error
+}
+
+case_usage_missing_source() {
+  run distance "$MESH"
+  expect_usage_error
+  expect_err 'source'
+}
+
+case_usage_missing_mesh() {
+  run distance --source v:0
+  expect_usage_error
+  expect_err 'MESH'
+}
+
+case_usage_bad_stop_distance() {
+  run distance "$MESH" --source v:0 --stop-distance abc
+  expect_usage_error
+  run distance "$MESH" --source v:0 --stop-distance -1
+  expect_usage_error
+  expect_err 'stop-distance'
+  run distance "$MESH" --source v:0 --stop-distance nan
+  expect_usage_error
+}
+
+case_missing_file() {
+  run distance "$WORK/does_not_exist.off" --source v:0
+  expect_usage_error
+  expect_err 'does_not_exist\.off'
+  run info "$WORK/does_not_exist.off"
+  expect_usage_error
+  expect_err 'does_not_exist\.off'
+}
+
+case_bad_face_index() {
+  run distance "$DATA/bad_face_index.off" --source v:0
+  expect_usage_error
+  expect_err 'bad_face_index\.off'
+  expect_err '[Ff]ace[^0-9]{0,3}1([^0-9]|$)'  # face 1 (0-based) is the bad one
+  expect_err '42'                             # its bad vertex index
+  run info "$DATA/bad_face_index.off"
+  expect_usage_error
+  expect_err '[Ff]ace[^0-9]{0,3}1([^0-9]|$)'
+}
+
+case_truncated_file() {
+  run distance "$DATA/truncated.off" --source v:0
+  expect_usage_error
+  expect_err 'truncated\.off'
+}
+
+case_garbage_file() {
+  head -c 4096 /dev/urandom >"$WORK/garbage.off"
+  run distance "$WORK/garbage.off" --source v:0
+  expect_usage_error
+  printf 'OFF\n3 1 0\n0 0 0\n1 0 0\nnan 1 0\n3 0 1 2\n' >"$WORK/nan.off"
+  run distance "$WORK/nan.off" --source v:0
+  expect_usage_error
+  printf 'OFF\n99999999999 1 0\n' >"$WORK/huge.off"
+  run distance "$WORK/huge.off" --source v:0
+  expect_usage_error
+}
+
+case_bad_spec() {
+  local spec
+  for spec in 'x:1' 'v:abc' 'v:' 'v' '' 'e:0,1' 'e:0,1,abc' 'f:0,1,2' 'v:1junk' 'v:-1'; do
+    run distance "$MESH" --source "$spec"
+    expect_usage_error
+  done
+  run distance "$MESH" --source v:0 --target 'q:3'
+  expect_usage_error
+  run path "$MESH" --source v:0 --target 'v:'
+  expect_usage_error
+}
+
+case_source_out_of_range() {
+  run distance "$MESH" --source v:100
+  expect_usage_error
+  expect_err '100'
+  run distance "$MESH" --source f:7,0.2,0.3,0.5
+  expect_usage_error
+  run distance "$MESH" --source e:0,1,1.5  # fraction outside [0, 1]
+  expect_usage_error
+  run distance "$MESH" --source e:1,3,0.5  # no edge joins 1 and 3
+  expect_usage_error
+  run path "$MESH" --source v:0 --target v:100
+  expect_usage_error
+  expect_err '100'
+}
+
+case_distance_lines() {
+  run distance "$MESH" --source v:0
+  expect_rc 0
+  [[ $(wc -l <"$OUT") -eq 8 ]] || fail "expected one line per vertex (8)"
+  expect_close "$(line "$OUT" 1)" 0 1e-15
+  expect_close "$(line "$OUT" 2)" 1 1e-12
+  expect_close "$(line "$OUT" 3)" 1.4142135623730951 1e-12
+  expect_close "$(line "$OUT" 4)" 1 1e-12
+  local v
+  for v in 5 6 7; do [[ $(line "$OUT" $v) == inf ]] || fail "vertex $((v - 1)) (second component) should be inf"; done
+  [[ $(line "$OUT" 8) == inf ]] || fail "vertex 7 (unreferenced) should be inf"
+  # SPEC before MESH parses too.
+  run distance --source v:0 "$MESH"
+  expect_rc 0
+  [[ $(wc -l <"$OUT") -eq 8 ]] || fail "expected 8 lines with --source before MESH"
+}
+
+case_distance_sources() {
+  run distance "$MESH" --source v:0 --source v:2
+  expect_rc 0
+  expect_close "$(line "$OUT" 3)" 0 1e-15
+  expect_close "$(line "$OUT" 2)" 1 1e-12
+  run distance "$MESH" --source e:0,1,0.25
+  expect_rc 0
+  expect_close "$(line "$OUT" 1)" 0.25 1e-12
+  expect_close "$(line "$OUT" 2)" 0.75 1e-12
+  expect_close "$(line "$OUT" 4)" 1.0307764064044151 1e-12  # sqrt(1 + 0.25^2)
+  run distance "$MESH" --source f:1,0.2,0.3,0.5  # face 1 = (0 2 3): point (0.3, 0.8)
+  expect_rc 0
+  expect_close "$(line "$OUT" 1)" 0.8544003745317531 1e-12  # |(0.3, 0.8)|
+  [[ $(line "$OUT" 5) == inf ]] || fail "second component should be inf"
+}
+
+case_distance_stop() {
+  run distance "$MESH" --source v:0 --stop-distance 0.5
+  expect_rc 0
+  [[ $(wc -l <"$OUT") -eq 8 ]] || fail "expected 8 lines"
+  expect_close "$(line "$OUT" 1)" 0 1e-15
+  [[ $(line "$OUT" 2) == inf ]] || fail "vertex 1 (distance 1) is beyond --stop-distance 0.5"
+  run distance "$MESH" --source v:0 --stop-distance 10
+  expect_rc 0
+  expect_close "$(line "$OUT" 3)" 1.4142135623730951 1e-12
+  run distance "$MESH" --source v:0 --target v:1
+  expect_rc 0
+  expect_close "$(line "$OUT" 2)" 1 1e-12
+}
+
+case_distance_out() {
+  run distance "$MESH" --source v:0
+  cp "$OUT" "$WORK/expected.txt"
+  run distance "$MESH" --source v:0 --out "$WORK/d.txt"
+  expect_rc 0
+  [[ ! -s $OUT ]] || fail "stdout should be empty with --out"
+  cmp -s "$WORK/d.txt" "$WORK/expected.txt" || fail "--out file differs from stdout output"
+  # Overwrites an existing file.
+  echo old >"$WORK/d.txt"
+  run distance "$MESH" --source v:0 -o "$WORK/d.txt"
+  expect_rc 0
+  cmp -s "$WORK/d.txt" "$WORK/expected.txt" || fail "--out should replace an existing file"
+}
+
+case_distance_out_atomic() {
+  echo old >"$WORK/keep.txt"
+  run distance "$MESH" --source v:100 --out "$WORK/keep.txt"
+  expect_usage_error
+  [[ $(cat "$WORK/keep.txt") == old ]] || fail "a failed run must not touch the --out file"
+  run distance "$DATA/bad_face_index.off" --source v:0 --out "$WORK/new.txt"
+  expect_usage_error
+  [[ ! -e $WORK/new.txt ]] || fail "a failed run must not create the --out file"
+  [[ -z $(find "$WORK" -name '*.tmp.*') ]] || fail "temporary files left behind"
+  run distance "$MESH" --source v:0 --out "$WORK/no/such/dir/d.txt"
+  expect_usage_error
+  expect_err 'no/such/dir/d\.txt'
+}
+
+case_distance_stats() {
+  run distance "$MESH" --source v:0 --stats
+  expect_rc 0
+  [[ $(wc -l <"$OUT") -eq 8 ]] || fail "stats go to stderr; stdout keeps 8 lines"
+  expect_err '^vertices: +8$'
+  expect_err '^reached: +4 '
+  expect_err '^max distance: +1\.41421356'
+  expect_err '^time:'
+  local kind
+  for kind in G1 G2 G3 G4 G5 D1 D2 D3 D4; do expect_err "^$kind +[0-9]+ "; done
+  # Sources on vertices of flat faces may need no propagation case at all: no rate then.
+  expect_err '^degeneracy rate \(G1–G5 over all cases\): ([0-9.]+%|n/a)$'
+  run distance "$BENT" --source f:3,0.2,0.3,0.5 --stats
+  expect_rc 0
+  expect_err '^all +[1-9][0-9]*$'
+  expect_err '^degeneracy rate \(G1–G5 over all cases\): [0-9]+\.[0-9]+%$'
+}
+
+case_path_length() {
+  run distance "$BENT" --source v:0
+  expect_rc 0
+  local d8
+  d8=$(line "$OUT" 9)
+  run path "$BENT" --source v:0 --target v:8
+  expect_rc 0
+  local last
+  last=$(tail -n 1 "$OUT")
+  [[ $last =~ ^length\ ([^ ]+)$ ]] || fail "last line should be 'length L'"
+  expect_close "${BASH_REMATCH[1]}" "$d8" 1e-12
+  [[ $(head -n 1 "$OUT") =~ ^v:0\  ]] || fail "the path should start at the source v:0"
+  [[ $(tail -n 2 "$OUT" | head -n 1) =~ ^v:8\  ]] || fail "the path should end at the target v:8"
+  # Each point line: SPEC x y z.
+  local bad
+  bad=$(head -n -1 "$OUT" | awk 'NF != 4' | head -n 1)
+  [[ -z $bad ]] || fail "point lines should be 'SPEC x y z': $bad"
+  # The same from a face point to an edge point.
+  run distance "$BENT" --source f:3,0.2,0.3,0.5
+  d8=$(line "$OUT" 9)
+  run path "$BENT" --source f:3,0.2,0.3,0.5 --target v:8
+  expect_rc 0
+  [[ $(tail -n 1 "$OUT") =~ ^length\ ([^ ]+)$ ]] || fail "last line should be 'length L'"
+  expect_close "${BASH_REMATCH[1]}" "$d8" 1e-12
+}
+
+case_path_unreachable() {
+  run path "$MESH" --source v:0 --target v:5
+  expect_rc 0
+  [[ $(cat "$OUT") == "length inf" ]] || fail "an unreachable target prints only 'length inf'"
+}
+
+case_info() {
+  run info "$MESH"
+  expect_rc 0
+  expect_out '^vertices: 8$'
+  expect_out '^faces: 3$'
+  expect_out '^edges: 8$'
+  expect_out '^boundary edges: 7$'
+  expect_out '^components: 2$'
+  expect_out '^unreferenced vertices: 1$'
+  expect_out '^pseudo-source vertices: 7 '
+  expect_out '^bounding-box diagonal: '
+  expect_out '^warning: '  # the unreferenced vertex, the second component
+  run info "$BENT"
+  expect_rc 0
+  expect_out '^components: 1$'
+  expect_out '^boundary edges: 8$'
+}
+
+ALL_CASES=$(declare -F | awk '{print $3}' | sed -n 's/^case_//p')
+
+if [[ $CASE == all ]]; then
+  failed=0
+  for c in $ALL_CASES; do
+    if (CASE=$c; "case_$c"); then echo "pass: $c"; else failed=$((failed + 1)); fi
+  done
+  echo "$(( $(wc -w <<<"$ALL_CASES") - failed )) passed, $failed failed"
+  exit $((failed > 0))
+fi
+declare -F "case_$CASE" >/dev/null || { echo "unknown case '$CASE'; cases: $ALL_CASES" >&2; exit 2; }
+"case_$CASE"
