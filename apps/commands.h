@@ -18,5 +18,6 @@ struct Command {
 Command addDistanceCommand(CLI::App& app);
 Command addPathCommand(CLI::App& app);
 Command addInfoCommand(CLI::App& app);
+Command addCheckCommand(CLI::App& app);
 
 }  // namespace geodex::cli

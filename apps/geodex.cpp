@@ -48,7 +48,7 @@ int runMain(int argc, char** argv) {
   app.footer(kFooter);
 
   const std::vector<Command> commands{addDistanceCommand(app), addPathCommand(app),
-                                      addInfoCommand(app)};
+                                      addInfoCommand(app), addCheckCommand(app)};
 
   try {
     app.parse(argc, argv);
