@@ -29,6 +29,7 @@ struct CheckCommandOptions {
   std::string oracles;  // comma-separated
   std::string level = "cheap";
   bool json = false;
+  bool sampleSources = false;
   std::string reproducer = "geodex-check-repro.txt";
 };
 
@@ -40,12 +41,37 @@ std::vector<std::string> splitList(const std::string& s) {
   return parts;
 }
 
+// A vertex, a point on an edge and a point in a face, spread over the mesh and chosen the same
+// way every time: the first referenced vertex, and a face half-way through the face list.
+std::vector<SurfacePoint> sampleSources(const Mesh& mesh) {
+  std::vector<SurfacePoint> s;
+  if (mesh.numFaces() == 0) return s;
+  Index v = 0;
+  while (!mesh.isReferenced(v)) ++v;
+  s.push_back(SurfacePoint::atVertex(v));
+  const Index f = static_cast<Index>(mesh.numFaces() / 2);
+  const auto& t = mesh.face(f);
+  s.push_back(SurfacePoint::onEdge(t[0], t[1], 0.37));
+  s.push_back(SurfacePoint::inFace(f, 0.2, 0.3, 0.5));
+  return s;
+}
+
 int runCheck(const CheckCommandOptions& o) {
-  const std::vector<SurfacePoint> sources = parseSurfacePoints(o.sources, "--source");
+  std::vector<SurfacePoint> sources = parseSurfacePoints(o.sources, "--source");
   if (o.level != "cheap" && o.level != "full")
     throw InputError("usage", "--level must be cheap or full, not '" + o.level + "'");
   const Mesh mesh = loadMeshWithWarnings(o.meshPath);
+  if (o.sampleSources) {
+    const auto more = sampleSources(mesh);
+    sources.insert(sources.end(), more.begin(), more.end());
+  }
+  if (sources.empty()) throw InputError("usage", "give --source (at least one) or --sample-sources");
   checkPointsOnMesh(mesh, sources, "--source");
+  if (!o.json) {
+    std::cout << "sources:";
+    for (const SurfacePoint& p : sources) std::cout << " " << formatSurfacePoint(p);
+    std::cout << "\n";
+  }
 
   verify::CheckOptions options;
   options.level = o.level == "full" ? verify::CheckLevel::Full : verify::CheckLevel::Cheap;
@@ -76,8 +102,9 @@ Command addCheckCommand(CLI::App& app) {
   CLI::App* sub = app.add_subcommand(
       "check", "Solve with every invariant checked and independent oracles; exit 1 on a violation");
   sub->add_option("MESH", o->meshPath, "Triangle mesh (OFF, OBJ or PLY)")->required();
-  sub->add_option("--source,-s", o->sources, "Source point, repeatable: v:I, e:I,J,T or f:F,A,B,C")
-      ->required();
+  sub->add_option("--source,-s", o->sources, "Source point, repeatable: v:I, e:I,J,T or f:F,A,B,C");
+  sub->add_flag("--sample-sources", o->sampleSources,
+                "Add a vertex, an edge point and a face point chosen from the mesh");
   sub->add_option("--oracles", o->oracles,
                   "Comma-separated: bounds,lipschitz,planar,symmetry,metamorphic,paths,"
                   "exact-predicates,cgal (default: all but cgal)");
