@@ -45,10 +45,11 @@ class ExactPredicateObserver : public SolverObserver {
  public:
   OracleResult result{std::string("exact-predicates")};
   void onPropagation(const PropagationEvent& e) override {
-    const ExactFig6 exact = exactFig6(e.local);
-    if (!(exact.margin > kExactMargin)) return;
+    bool agrees = false;
+    if (!judgeFig6(e.local, e.result.branch, agrees)) return;
     ++result.checked;
-    if (exact.branch == e.result.branch) return;
+    if (agrees) return;
+    const ExactFig6 exact = exactFig6(e.local);
     ++result.failed;
     result.maxError = 1.0;
     if (result.firstFailure.empty()) {
@@ -99,8 +100,8 @@ void compareFields(OracleResult& r, const std::string& what, std::span<const dou
 
 // ===  Oracles ====================================================================================
 
-void metamorphic(OracleResult& r, const Mesh& mesh, const std::vector<SurfacePoint>& sources,
-                 std::span<const double> d) {
+void metamorphicInto(OracleResult& r, const Mesh& mesh, const std::vector<SurfacePoint>& sources,
+                     std::span<const double> d) {
   const TriangleSoup& soup = mesh.soup();
   const double diag = mesh.boundingBoxDiagonal();
   // Rigid motion: a rotation about a skew axis and a translation.
@@ -168,10 +169,8 @@ void metamorphic(OracleResult& r, const Mesh& mesh, const std::vector<SurfacePoi
   }
 }
 
-void symmetry(OracleResult& r, const Mesh& mesh, const SurfacePoint& a) {
-  // d(a, ·) from the first source alone (the checked field may have several sources), then back
-  // from the farthest reachable vertex and two more spread over the mesh.
-  const std::vector<double> d = exactGeodesicDistance(mesh, std::vector<SurfacePoint>{a});
+void symmetryInto(OracleResult& r, const Mesh& mesh, const SurfacePoint& a, std::span<const double> d) {
+  // From the farthest reachable vertex b and two more spread over the mesh, back to a.
   std::vector<Index> bs;
   Index far = kNoIndex;
   for (Index v = 0; v < d.size(); ++v)
@@ -217,7 +216,7 @@ bool flattenIfPlanar(const TriangleSoup& soup, double diag, TriangleSoup& flat) 
   return true;
 }
 
-void planar(OracleResult& r, const Mesh& mesh, const std::vector<SurfacePoint>& sources, std::span<const double> d) {
+void planarInto(OracleResult& r, const Mesh& mesh, const std::vector<SurfacePoint>& sources, std::span<const double> d) {
   TriangleSoup flat;
   const double diag = mesh.boundingBoxDiagonal();
   if (mesh.numComponents() != 1 || !flattenIfPlanar(mesh.soup(), diag, flat)) return;
@@ -239,7 +238,7 @@ void planar(OracleResult& r, const Mesh& mesh, const std::vector<SurfacePoint>& 
   compareFields(r, "planar shortest path", exact, d, 1.0, diag);
 }
 
-void paths(OracleResult& r, const GeodesicSolver& solver, std::span<const double> d) {
+void pathsInto(OracleResult& r, const GeodesicSolver& solver, std::span<const double> d) {
   const Mesh& mesh = solver.mesh();
   const std::size_t n = d.size();
   const std::size_t step = std::max<std::size_t>(1, n / 16);
@@ -307,6 +306,33 @@ void writeReproducerFile(const std::string& path, const CheckOptions& o, const s
 
 }  // namespace
 
+OracleResult planarOracle(const Mesh& mesh, const std::vector<SurfacePoint>& sources, std::span<const double> d) {
+  OracleResult r("planar");
+  planarInto(r, mesh, sources, d);
+  return r;
+}
+OracleResult metamorphicOracle(const Mesh& mesh, const std::vector<SurfacePoint>& sources, std::span<const double> d) {
+  OracleResult r("metamorphic");
+  metamorphicInto(r, mesh, sources, d);
+  return r;
+}
+OracleResult symmetryOracle(const Mesh& mesh, const SurfacePoint& a, std::span<const double> dFromA) {
+  OracleResult r("symmetry");
+  symmetryInto(r, mesh, a, dFromA);
+  return r;
+}
+OracleResult pathOracle(const GeodesicSolver& solver, std::span<const double> d) {
+  OracleResult r("paths");
+  pathsInto(r, solver, d);
+  return r;
+}
+bool judgeFig6(const LocalWindow& w, Fig6Branch decided, bool& agrees) {
+  const ExactFig6 exact = exactFig6(w);
+  if (!(exact.margin > kExactMargin)) return false;
+  agrees = exact.branch == decided;
+  return true;
+}
+
 const std::vector<std::string>& oracleNames() {
   static const std::vector<std::string> names{"bounds", "lipschitz", "planar", "symmetry", "metamorphic",
                                               "paths", "exact-predicates", "cgal"};
@@ -352,26 +378,14 @@ CheckResult runChecks(const Mesh& mesh, const std::vector<SurfacePoint>& sources
     add(fromReport("bounds-dijkstra", checkUpperBound(d, edgeGraphDijkstra(mesh, sources), kBoundRel)));
   }
   if (wanted(options, "lipschitz")) add(fromReport("lipschitz", checkLipschitz(mesh, d, kBoundRel)));
-  if (wanted(options, "planar")) {
-    OracleResult r("planar");
-    planar(r, mesh, sources, d);
-    add(r);
-  }
+  if (wanted(options, "planar")) add(planarOracle(mesh, sources, d));
   if (wanted(options, "symmetry") && !sources.empty()) {
-    OracleResult r("symmetry");
-    symmetry(r, mesh, sources.front());
-    add(r);
+    // d(a, ·) from the first source alone: the checked field may have several sources.
+    const SurfacePoint& a = sources.front();
+    add(symmetryOracle(mesh, a, exactGeodesicDistance(mesh, std::vector<SurfacePoint>{a})));
   }
-  if (wanted(options, "metamorphic")) {
-    OracleResult r("metamorphic");
-    metamorphic(r, mesh, sources, d);
-    add(r);
-  }
-  if (wanted(options, "paths")) {
-    OracleResult r("paths");
-    paths(r, solver, d);
-    add(r);
-  }
+  if (wanted(options, "metamorphic")) add(metamorphicOracle(mesh, sources, d));
+  if (wanted(options, "paths")) add(pathOracle(solver, d));
   if (wanted(options, "exact-predicates")) add(exact.result);
   if (wanted(options, "cgal")) {
     OracleResult r = fromReport("cgal", checkAgreement(d, options.cgal(soup, sources), kAgreeRel));

@@ -215,11 +215,15 @@ void InvariantChecker::onEdgeUpdate(const EdgeUpdateEvent& e) {
 
 void InvariantChecker::onFinish(const GeodesicSolver& solver) {
   if (level_ != CheckLevel::Full) return;
-  const Mesh& mesh = solver.mesh();
-  const auto d = solver.vertexDistances();
-  const bool ranToEnd = !std::isfinite(solver.stats().radius);
+  checkFinal(solver.mesh(), solver.edgeIntervals(), solver.vertexDistances(), solver.sources(),
+             !std::isfinite(solver.stats().radius));
+}
+
+void InvariantChecker::checkFinal(const Mesh& mesh, std::span<const EdgeIntervals> edges,
+                                  std::span<const double> d, std::span<const ResolvedPoint> sources,
+                                  bool ranToEnd) {
   std::vector<char> sourceComponent(mesh.numComponents() + 1, 0);
-  for (const ResolvedPoint& s : solver.sources()) {
+  for (const ResolvedPoint& s : sources) {
     Index v = kNoIndex;
     if (s.kind == SurfacePoint::Kind::Vertex) v = s.element;
     else if (s.kind == SurfacePoint::Kind::Edge) v = mesh.edge(s.element).vertex[0];
@@ -228,7 +232,7 @@ void InvariantChecker::onFinish(const GeodesicSolver& solver) {
   }
   for (Index e = 0; e < mesh.numEdges(); ++e) {
     const Edge& E = mesh.edge(e);
-    const auto list = solver.edgeIntervals()[e].intervals();
+    const auto list = edges[e].intervals();
     if (ranToEnd && sourceComponent[mesh.componentOf(E.vertex[0])]) {
       bool covered = !list.empty() && list.front().b0 == 0.0 && list.back().b1 == E.length;
       for (std::size_t i = 0; covered && i + 1 < list.size(); ++i) covered = list[i].b1 == list[i + 1].b0;

@@ -57,6 +57,18 @@ struct CheckResult {
   bool ok() const { return violations.empty(); }
 };
 
+// The oracles on a given distance field `d` (per vertex, from `sources`), so that a test can hand
+// them a perturbed field and see them fail. runChecks() calls these with the solver's field.
+OracleResult planarOracle(const Mesh& mesh, const std::vector<SurfacePoint>& sources, std::span<const double> d);
+OracleResult metamorphicOracle(const Mesh& mesh, const std::vector<SurfacePoint>& sources, std::span<const double> d);
+/// `dFromA`: the field of the single source `a`.
+OracleResult symmetryOracle(const Mesh& mesh, const SurfacePoint& a, std::span<const double> dFromA);
+/// Traces paths with `solver` (already solved) and compares their lengths with `d`.
+OracleResult pathOracle(const GeodesicSolver& solver, std::span<const double> d);
+/// One Fig. 6 case: whether `decided` matches the exact decision; false when the configuration
+/// is too close to ambiguity to judge (then `agrees` is not set).
+bool judgeFig6(const LocalWindow& w, Fig6Branch decided, bool& agrees);
+
 /// All oracle names, in report order.
 const std::vector<std::string>& oracleNames();
 

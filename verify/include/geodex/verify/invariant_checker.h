@@ -58,6 +58,11 @@ class InvariantChecker : public SolverObserver {
 
   void onEdgeUpdate(const EdgeUpdateEvent& e) override;
   void onFinish(const GeodesicSolver& solver) override;
+  /// The end-of-run invariants (full tier) on given lists: every edge in a component holding a
+  /// source fully covered (when the solve ran to the end), every vertex distance equal to what
+  /// each incident edge gives there. onFinish calls this with the solver's state.
+  void checkFinal(const Mesh& mesh, std::span<const EdgeIntervals> edges, std::span<const double> d,
+                  std::span<const ResolvedPoint> sources, bool ranToEnd);
 
   const std::vector<InvariantTally>& tallies() const { return tallies_; }
   std::uint64_t violations() const;

@@ -1,0 +1,93 @@
+// `geodex check`'s oracles each fail on a perturbed distance field, and pass on the solver's
+// (issue 3, acceptance 2).
+#include "geodex/verify/check.h"
+
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+#include "geodex/error.h"
+#include "geodex/verify/mesh_generators.h"
+
+namespace geodex::verify {
+namespace {
+
+struct Solved {
+  Mesh mesh;
+  std::vector<SurfacePoint> sources;
+  GeodesicSolver solver;
+  std::vector<double> d;
+  Solved(TriangleSoup soup, std::vector<SurfacePoint> s) : mesh(std::move(soup)), sources(std::move(s)), solver(mesh) {
+    solver.solve(sources);
+    d.assign(solver.vertexDistances().begin(), solver.vertexDistances().end());
+  }
+};
+
+TEST(CheckOracles, PlanarFailsOnAPerturbedField) {
+  Solved s(lShapeMesh(8, 1.0), {SurfacePoint::atVertex(0)});
+  EXPECT_GT(planarOracle(s.mesh, s.sources, s.d).checked, 0u);
+  EXPECT_EQ(planarOracle(s.mesh, s.sources, s.d).failed, 0u);
+  std::vector<double> bad = s.d;
+  bad[40] += 1e-6;
+  EXPECT_EQ(planarOracle(s.mesh, s.sources, bad).failed, 1u);
+}
+
+TEST(CheckOracles, MetamorphicFailsOnAPerturbedField) {
+  Solved s(icosphereMesh(1, 1.0), {SurfacePoint::inFace(3, 0.2, 0.3, 0.5)});
+  EXPECT_EQ(metamorphicOracle(s.mesh, s.sources, s.d).failed, 0u);
+  std::vector<double> bad = s.d;
+  bad[20] *= 1.0 + 1e-7;
+  EXPECT_GT(metamorphicOracle(s.mesh, s.sources, bad).failed, 0u);
+}
+
+TEST(CheckOracles, SymmetryFailsOnAPerturbedField) {
+  Solved s(icosphereMesh(2, 1.0), {SurfacePoint::atVertex(0)});
+  EXPECT_EQ(symmetryOracle(s.mesh, s.sources[0], s.d).failed, 0u);
+  std::vector<double> bad = s.d;
+  for (double& x : bad) x *= 1.0 + 1e-6;  // whichever vertices it picks
+  EXPECT_GT(symmetryOracle(s.mesh, s.sources[0], bad).failed, 0u);
+}
+
+TEST(CheckOracles, PathsFailOnAPerturbedField) {
+  Solved s(jitteredGridMesh(6, 6, 1.0, 1.0, 0.1, 2), {SurfacePoint::atVertex(24)});
+  EXPECT_EQ(pathOracle(s.solver, s.d).failed, 0u);
+  std::vector<double> bad = s.d;
+  bad[0] += 1e-6;  // vertex 0 is among the traced ones
+  EXPECT_EQ(pathOracle(s.solver, bad).failed, 1u);
+}
+
+TEST(CheckOracles, ExactPredicatesCatchAWrongDecision) {
+  // v1 = (1,1) clearly inside the wedge from s = (1,-1) through [0.5, 1.5].
+  const LocalWindow w{2.0, Vec2(1.0, 1.0), 0.5, 1.5, Vec2(1.0, -1.0)};
+  bool agrees = false;
+  ASSERT_TRUE(judgeFig6(w, Fig6Branch::InsideWedge, agrees));
+  EXPECT_TRUE(agrees);
+  ASSERT_TRUE(judgeFig6(w, Fig6Branch::LeftOfWedge, agrees));
+  EXPECT_FALSE(agrees);
+  // Within a few ε of G2 the exact tree cannot judge the ε decision.
+  const LocalWindow nearG2{2.0, Vec2(1.0, 1.0), 0.5, 1.5, Vec2(1e-12, -1.0)};
+  EXPECT_FALSE(judgeFig6(nearG2, Fig6Branch::G2, agrees));
+}
+
+TEST(CheckRun, AGridPassesEverythingAndReportsJson) {
+  const Mesh mesh(gridMesh(6, 6, 1.0, 1.0, DiagonalPattern::Alternating));
+  CheckOptions options;
+  options.level = CheckLevel::Full;
+  const CheckResult r = runChecks(mesh, {SurfacePoint::atVertex(3), SurfacePoint::inFace(20, 0.2, 0.3, 0.5)}, options);
+  EXPECT_TRUE(r.ok()) << (r.violations.empty() ? "" : r.violations.front());
+  std::ostringstream json;
+  writeCheckJson(json, r);
+  for (const char* key : {"\"cases\"", "\"degeneracies\"", "\"G1\"", "\"D4\"", "\"violations\"", "\"oracles\"",
+                          "\"checked\"", "\"failed\"", "\"max_error\"", "\"planar\"", "\"exact-predicates\""})
+    EXPECT_NE(json.str().find(key), std::string::npos) << key;
+}
+
+TEST(CheckRun, UnknownOracleIsRefused) {
+  const Mesh mesh(gridMesh(2, 2, 1.0, 1.0));
+  CheckOptions options;
+  options.oracles = {"astrology"};
+  EXPECT_THROW(runChecks(mesh, {SurfacePoint::atVertex(0)}, options), InputError);
+}
+
+}  // namespace
+}  // namespace geodex::verify

@@ -1,0 +1,168 @@
+// Every step-6 invariant must fail on a deliberately broken input: a checker that cannot fail
+// checks nothing (issue 3, acceptance 2).
+#include "geodex/verify/invariant_checker.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <iterator>
+
+#include "geodex/tolerance.h"
+#include "geodex/verify/mesh_generators.h"
+
+namespace geodex::verify {
+namespace {
+
+constexpr double kL = 10.0;
+
+Interval make(double b0, double b1, Vec2 source, double sigma = 0.0) {
+  Interval w;
+  w.b0 = b0;
+  w.b1 = b1;
+  w.source = source;
+  w.sigma = sigma;
+  return w;
+}
+
+std::string brokenInvariant(std::vector<Interval> list) {
+  std::string why;
+  return InvariantChecker::checkList(list, kL, why);
+}
+
+TEST(InvariantChecker, AWellFormedListPasses) {
+  EXPECT_EQ(brokenInvariant({make(0, 4, Vec2(2, 1)), make(4, kL, Vec2(7, 1))}), "");
+}
+TEST(InvariantChecker, UnsortedFails) {
+  EXPECT_EQ(brokenInvariant({make(4, kL, Vec2(7, 1)), make(0, 4, Vec2(2, 1))}), "sorted");
+}
+TEST(InvariantChecker, OutOfRangeFails) {
+  EXPECT_EQ(brokenInvariant({make(0, kL + 1, Vec2(2, 1))}), "in-range");
+}
+TEST(InvariantChecker, OverlapFails) {
+  EXPECT_EQ(brokenInvariant({make(0, 5, Vec2(2, 1)), make(4, kL, Vec2(7, 1))}), "no-overlap");
+}
+TEST(InvariantChecker, UnsewnTinyGapFails) {
+  const double gap = 0.1 * tol::kTinyIntervalRel * kL;
+  EXPECT_EQ(brokenInvariant({make(0, 5, Vec2(2, 1)), make(5 + gap, kL, Vec2(7, 1))}), "no-tiny-gap");
+}
+TEST(InvariantChecker, TinyIntervalFails) {
+  const double tiny = 0.1 * tol::kTinyIntervalRel * kL;
+  EXPECT_EQ(brokenInvariant({make(0, 5, Vec2(2, 1)), make(5, 5 + tiny, Vec2(5, 1)), make(5 + tiny, kL, Vec2(7, 1))}),
+            "no-tiny-interval");
+}
+TEST(InvariantChecker, NegativeSigmaFails) {
+  EXPECT_EQ(brokenInvariant({make(0, kL, Vec2(2, 1), -1.0)}), "finite-non-negative");
+}
+TEST(InvariantChecker, NanSourceFails) {
+  EXPECT_EQ(brokenInvariant({make(0, kL, Vec2(std::nan(""), 1))}), "finite-non-negative");
+}
+TEST(InvariantChecker, SourceBelowTheEdgeFails) {
+  EXPECT_EQ(brokenInvariant({make(0, kL, Vec2(2, -1))}), "real-source");
+}
+
+// An edge update event over hand-made lists.
+struct Update {
+  std::vector<Interval> before, after;
+  Interval incoming;
+  EdgeUpdateReport report;
+  EdgeUpdateEvent event() const { return {0, kL, before, incoming, after, report, nullptr}; }
+};
+
+std::string violatedBy(const Update& u) {
+  InvariantChecker checker(CheckLevel::Full, /*throwOnViolation=*/true);
+  try {
+    checker.onEdgeUpdate(u.event());
+  } catch (const InvariantViolation& v) {
+    EXPECT_EQ(v.edgeLength, kL);
+    return v.invariant();
+  }
+  return "";
+}
+
+TEST(InvariantChecker, MismatchAtAnEq1BreakpointFails) {
+  Update u;
+  u.before = {make(0, kL, Vec2(2, 1))};
+  u.incoming = make(0, kL, Vec2(8, 1));
+  // Split at 4 although the two are equal only at 5.
+  u.after = {make(0, 4, Vec2(2, 1)), make(4, kL, Vec2(8, 1))};
+  u.report.eq1Breakpoints = {4.0};
+  EXPECT_EQ(violatedBy(u), "continuous-at-eq1");
+  u.after = {make(0, 5, Vec2(2, 1)), make(5, kL, Vec2(8, 1))};
+  u.report.eq1Breakpoints = {5.0};
+  EXPECT_EQ(violatedBy(u), "");
+}
+
+TEST(InvariantChecker, IgnoringABetterIncomingIntervalFails) {
+  Update u;
+  u.before = {make(0, kL, Vec2(5, 3), 1.0)};
+  u.incoming = make(2, 8, Vec2(5, 1), 0.0);  // shorter everywhere on [2, 8]
+  u.after = u.before;
+  EXPECT_EQ(violatedBy(u), "pointwise-min");
+}
+
+TEST(InvariantChecker, LosingCoverageFails) {
+  Update u;
+  u.before = {make(0, kL, Vec2(5, 3), 1.0)};
+  u.incoming = make(2, 8, Vec2(5, 3), 2.0);  // worse everywhere
+  u.after = {make(0, 5, Vec2(5, 3), 1.0)};   // but half the edge went missing
+  EXPECT_EQ(violatedBy(u), "pointwise-min");
+}
+
+TEST(InvariantChecker, EndOfRunCoverageAndVertexAgreementFail) {
+  const Mesh mesh(gridMesh(4, 4, 1.0, 1.0));
+  GeodesicSolver solver(mesh);
+  solver.solve(std::vector<SurfacePoint>{SurfacePoint::atVertex(0)});
+  std::vector<EdgeIntervals> edges(solver.edgeIntervals().begin(), solver.edgeIntervals().end());
+  std::vector<double> d(solver.vertexDistances().begin(), solver.vertexDistances().end());
+  {
+    InvariantChecker ok(CheckLevel::Full, true);
+    EXPECT_NO_THROW(ok.checkFinal(mesh, edges, d, solver.sources(), true));
+  }
+  {
+    std::vector<EdgeIntervals> holed = edges;
+    holed[7].clear();
+    InvariantChecker checker(CheckLevel::Full, true);
+    try {
+      checker.checkFinal(mesh, holed, d, solver.sources(), true);
+      ADD_FAILURE() << "an uncovered edge went unnoticed";
+    } catch (const InvariantViolation& v) {
+      EXPECT_EQ(v.invariant(), "full-coverage");
+    }
+  }
+  {
+    std::vector<double> wrong = d;
+    wrong[12] *= 1.01;
+    InvariantChecker checker(CheckLevel::Full, true);
+    try {
+      checker.checkFinal(mesh, edges, wrong, solver.sources(), true);
+      ADD_FAILURE() << "a wrong vertex distance went unnoticed";
+    } catch (const InvariantViolation& v) {
+      EXPECT_EQ(v.invariant(), "vertex-agreement");
+    }
+  }
+}
+
+TEST(InvariantChecker, ReproducerNamesTheInvariant) {
+  Update u;
+  u.before = {make(0, kL, Vec2(5, 3), 1.0)};
+  u.incoming = make(2, 8, Vec2(5, 1), 0.0);
+  u.after = u.before;
+  InvariantChecker checker(CheckLevel::Full, true);
+  try {
+    checker.onEdgeUpdate(u.event());
+  } catch (const InvariantViolation& v) {
+    const std::string path = ::testing::TempDir() + "/repro.txt";
+    writeReproducer(v, path);
+    std::ifstream in(path);
+    const std::string text((std::istreambuf_iterator<char>(in)), {});
+    EXPECT_NE(text.find("geodex-edge-update 1"), std::string::npos);
+    EXPECT_NE(text.find("invariant pointwise-min"), std::string::npos);
+    EXPECT_NE(text.find("incoming 2 8 5 1 0 0"), std::string::npos);
+    return;
+  }
+  ADD_FAILURE() << "no violation";
+}
+
+}  // namespace
+}  // namespace geodex::verify

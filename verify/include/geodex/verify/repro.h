@@ -1,0 +1,357 @@
+#pragma once
+// Fuzz cases and their reproducers: the byte formats of the libFuzzer targets in fuzz/, the
+// property checks they run, and the functions `geodex repro FILE [--target T] [--svg OUT]` is
+// made of. Everything a corpus file means is defined here (not in fuzz/), so that a reproducer
+// can be read, described, re-checked and drawn without the fuzzers.
+//
+//   std::vector<std::uint8_t> bytes = readFileBytes(path);
+//   std::optional<FuzzTarget> t = detectTarget(path, bytes);   // or parseFuzzTarget("fuzz_solver")
+//   describe(*t, bytes, std::cout);                             // the case, readable
+//   Verdict v = replay(*t, bytes);                              // every check on
+//   if (!v.ok()) std::cout << v.failed << ": " << v.message << "\n";
+//   writeSvg(*t, bytes, svgStream);                             // the local configuration
+//
+// or all of it in one call: `return runRepro(path, target, svgPath, std::cout);`.
+//
+// Targets and what each checks (docs/fuzzing.md has the byte layouts):
+//   fuzz_mesh_io      bytes → readMeshFromMemory → a soup or InputError (nothing else escapes);
+//                     validateMesh never throws; a soup without errors builds a Mesh (corner
+//                     angles in [0, π] summing to π) and round-trips through OFF exactly.
+//   fuzz_predicates   a LocalWindow on a lattice, nudged by multiples of the tolerances →
+//                     propagateLocal: the branch equals the exactly evaluated (GMP rationals)
+//                     Fig. 6 tree wherever each predicate on the path is clearly decided (its
+//                     value ≤ ε/10 or ≥ 11 ε); children's ranges in [0, 1], t0 ≤ t1; every ray of
+//                     the wedge that enters the face leaves it inside a child (coverage) and
+//                     every child point is seen from s through [b0, b1] (soundness), up to an
+//                     angle of 100 × the tolerances.
+//   fuzz_edge_update  a valid interval list and an incoming interval → EdgeIntervals::insert:
+//                     the cheap step-6 invariants and the pointwise-min property
+//                     (InvariantChecker, full tier), no pseudo-source invented, ids unique,
+//                     every id to queue present. Also reads the text reproducers of
+//                     writeReproducer ("geodex-edge-update 1").
+//   fuzz_propagation  two faces sharing an edge (any 3-D lattice positions) and a source point →
+//                     a full solve with the full InvariantChecker and the unfolding check (every
+//                     propagated child's distance equals σ + the 3-D distance to its parent's
+//                     pseudo-source unfolded into the crossed face); distances at vertices, edge
+//                     and face points equal the exact two-face distance (min over the shared edge).
+//   fuzz_solver       a small mesh (height field on a grid with holes, jitter and steps, or a
+//                     lattice soup; ≤ 64 faces) and 1–3 sources → a full solve with the cheap
+//                     InvariantChecker (full in replay) and the unfolding check; Euclidean lower
+//                     bound, edge-graph Dijkstra upper bound, Lipschitz along edges, edge-midpoint
+//                     queries within their bounds, path length = distance; planar meshes agree
+//                     with the Euclidean (convex) or planar-domain distance to 1e-9 × diagonal;
+//                     optionally a stop distance and d(a, b) = d(b, a).
+//
+// Link: this file's implementation uses GMP (exact predicates): link `gmpxx gmp` with
+// geodex_verify when calling anything declared here.
+
+#include <array>
+#include <cstdint>
+#include <iosfwd>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include "geodex/degeneracy.h"
+#include "geodex/interval.h"
+#include "geodex/mesh.h"
+#include "geodex/propagate.h"
+#include "geodex/surface_point.h"
+
+namespace geodex::verify {
+
+// === Targets ===================================================================================
+
+enum class FuzzTarget : std::uint8_t { MeshIo, Predicates, EdgeUpdate, Propagation, Solver };
+inline constexpr std::array<FuzzTarget, 5> kFuzzTargets{
+    FuzzTarget::MeshIo, FuzzTarget::Predicates, FuzzTarget::EdgeUpdate, FuzzTarget::Propagation,
+    FuzzTarget::Solver};
+
+/// "fuzz_mesh_io", "fuzz_predicates", "fuzz_edge_update", "fuzz_propagation", "fuzz_solver".
+std::string_view name(FuzzTarget t);
+/// Accepts the full name or the part after "fuzz_" ("solver"); nullopt otherwise.
+std::optional<FuzzTarget> parseFuzzTarget(std::string_view s);
+
+// === Work caps =================================================================================
+// The fuzzing budget: the library has no fuzzing switch; the decoders cap what a case may ask for.
+
+inline constexpr std::size_t kMaxFuzzInputBytes = 4096;        ///< binary targets
+inline constexpr std::size_t kMaxMeshIoInputBytes = 1u << 16;  ///< fuzz_mesh_io
+inline constexpr int kMaxFuzzFaces = 64;          ///< fuzz_solver meshes
+inline constexpr int kMaxFuzzGridCells = 32;      ///< fuzz_solver grids: 2 faces per cell
+inline constexpr int kMaxFuzzSoupPoints = 24;     ///< fuzz_solver lattice soups
+inline constexpr int kMaxFuzzSources = 3;
+inline constexpr int kMaxFuzzOldIntervals = 8;    ///< fuzz_edge_update list before the update
+
+// === Byte primitives ===========================================================================
+// Reading past the end gives zeros (like FuzzedDataProvider), so every prefix of a valid input is
+// a valid input. All multi-byte values are little-endian.
+
+/// Which tolerance a nudge is a multiple of (tolerance.h).
+enum class Nudge : std::uint8_t {
+  Coincide,         ///< tol::kCoincideRel
+  Collinear,        ///< tol::kCollinearSin
+  TinyInterval,     ///< tol::kTinyIntervalRel
+  FlatFace,         ///< tol::kFlatFaceRel
+  SnapParam,        ///< tol::kSnapParam
+  FlatVertexAngle,  ///< tol::kFlatVertexAngle
+  SameSource,       ///< tol::kSameSourceRel
+  Continuity,       ///< tol::kContinuityRel
+};
+double toleranceOf(Nudge n);
+
+/// One number of a case: a lattice value, or a raw double, times 8^exponent, plus a nudge of a
+/// few multiples of a tolerance. 4 bytes on the wire (int16 n, int8 nudge, uint8 flags), 12
+/// with a raw double. Each field of a case says which lattice range n is wrapped into, what the
+/// lattice unit is, and what length the nudge's tolerance is relative to.
+///
+///   flags bits 0–2  the Nudge kind           bit 3  fine: the nudge is in 1/16 steps
+///         bits 4–6  exponent e (× 8^e)       bit 7  a raw double follows (replaces n)
+struct Quantity {
+  std::int16_t n = 0;
+  std::int8_t nudge = 0;
+  std::uint8_t flags = 0;
+  double raw = 0.0;
+
+  // Builders for readable seeds (fuzz/make_seeds.cpp).
+  static Quantity lattice(int n);
+  /// A raw value in lattice units (clamped to the field's range × 8^e when decoded).
+  static Quantity exact(double value);
+  /// Adds k (k/16 when fine) multiples of the tolerance t × the field's length scale.
+  Quantity nudged(int k, Nudge t, bool fine = false) const;
+  Quantity times8(int e) const;
+
+  bool isRaw() const { return (flags & 0x80) != 0; }
+  bool fine() const { return (flags & 0x08) != 0; }
+  int exponent() const { return (flags >> 4) & 7; }
+  Nudge nudgeKind() const { return static_cast<Nudge>(flags & 7); }
+};
+
+class ByteReader {
+ public:
+  explicit ByteReader(std::span<const std::uint8_t> bytes) : bytes_(bytes) {}
+  std::uint8_t u8() { return pos_ < bytes_.size() ? bytes_[pos_++] : 0; }
+  std::int8_t i8() { return static_cast<std::int8_t>(u8()); }
+  std::int16_t i16();
+  /// A raw double; non-finite values read as 0.
+  double f64();
+  Quantity quantity();
+  bool atEnd() const { return pos_ >= bytes_.size(); }
+
+ private:
+  std::span<const std::uint8_t> bytes_;
+  std::size_t pos_ = 0;
+};
+
+class ByteWriter {
+ public:
+  void u8(std::uint8_t v) { bytes_.push_back(v); }
+  void i8(std::int8_t v) { bytes_.push_back(static_cast<std::uint8_t>(v)); }
+  void i16(std::int16_t v);
+  void f64(double v);
+  void quantity(const Quantity& q);
+  const std::vector<std::uint8_t>& bytes() const { return bytes_; }
+
+ private:
+  std::vector<std::uint8_t> bytes_;
+};
+
+// === Specs: a case as its bytes describe it ====================================================
+// Each target's input is one spec, written field by field in the order below. The world's
+// lattice unit is 2^unitExp (unitExp wrapped into [−20, 20]), so every case also runs scaled.
+// Ranges are in lattice units; "nL" is the edge length's lattice value rounded up.
+
+/// fuzz_predicates: the local configuration of Fig. 3 (propagate.h).
+struct PredicateSpec {
+  std::int8_t unitExp = 0;
+  Quantity edgeLength;       ///< L ∈ [1, 64]; nudges relative to the lattice length
+  Quantity apexX, apexY;     ///< v1: x ∈ [−2 nL, 3 nL], y ∈ [0, 2 nL] (|y| taken)
+  Quantity b0, b1;           ///< ∈ [0, nL], swapped if reversed, clamped to [0, L]
+  Quantity sourceX, sourceY; ///< s: x ∈ [−4 nL, 5 nL], y ∈ [−4 nL, 0] (−|y| taken)
+  // Nudges of every field are relative to L.
+};
+
+/// One interval of fuzz_edge_update.
+struct IntervalSpec {
+  Quantity start;   ///< old intervals: the gap before it (∈ [0, nL]); incoming: b0 ∈ [0, nL]
+  Quantity extent;  ///< old intervals: its length (∈ [0, nL]); incoming: b1 ∈ [0, nL]
+  Quantity sourceX, sourceY;  ///< x ∈ [−2 nL, 3 nL], y ∈ [0, 2 nL] (|y| taken)
+  Quantity sigma;             ///< σ ∈ [0, 4 nL] (|σ| taken)
+  /// bit 0: side τ; bits 1–2: propagated part (none, all, first half, second half);
+  /// bit 3: source = that of interval `ref` + (sourceX, sourceY) read as offsets ∈ [−nL, nL];
+  /// bit 4: σ = that of interval `ref` + sigma read as an offset ∈ [−nL, nL].
+  std::uint8_t flags = 0;
+  std::uint8_t ref = 0;  ///< which earlier old interval (mod their count) bits 3–4 refer to
+};
+
+/// fuzz_edge_update: an edge's list before Algorithm 2 and the incoming interval. Old intervals
+/// are laid out left to right (gap, length, gap, length, …) and cut at L; a list the cheap
+/// invariants reject is not a valid starting point and the case is skipped.
+struct EdgeUpdateSpec {
+  std::int8_t unitExp = 0;
+  Quantity edgeLength;  ///< L ∈ [1, 64]
+  std::vector<IntervalSpec> before;  ///< count byte mod (kMaxFuzzOldIntervals + 1)
+  IntervalSpec incoming;
+};
+
+/// A source point of fuzz_propagation and fuzz_solver.
+struct SourceSpec {
+  std::uint8_t kind = 0;     ///< mod 3: vertex, edge point, face point
+  std::uint8_t element = 0;  ///< vertex: index mod #V (an unreferenced one moves to a face's
+                             ///< corner); edge and face point: face index mod #F
+  std::uint8_t corner = 0;   ///< edge point: the edge from corner k mod 3 to corner k + 1
+  Quantity t;                ///< edge point: t ∈ [0, 16] / 16; nudges relative to 1
+  Quantity a, b;             ///< face point: barycentrics a, b ∈ [0, 16] / 16, c = 1 − a − b
+                             ///< (reflected when a + b > 1)
+};
+
+/// fuzz_propagation: faces B = (v0, v1, v2) and A = (v0, v2, w) sharing the edge v0v2; windows
+/// from the source cross into the other face.
+struct PropagationSpec {
+  std::int8_t unitExp = 0;
+  std::array<std::array<Quantity, 3>, 4> points;  ///< v0, v2, v1, w: coordinates ∈ [−16, 16]
+  std::uint8_t winding = 0;  ///< bit 0 flips B, bit 1 flips A
+  SourceSpec source;
+};
+
+/// fuzz_solver: a small mesh and its sources.
+struct SolverSpec {
+  std::int8_t unitExp = 0;
+  std::uint8_t mode = 0;  ///< mod 2: 0 height field on a grid, 1 lattice soup
+  // --- mode 0: a grid of nx × ny cells (1 + byte mod 8 each, ny cut so nx·ny ≤ 32)
+  std::uint8_t nx = 1, ny = 1;
+  std::uint8_t levels = 0;  ///< z ∈ [0, max(1, levels mod 5)): 0 and 1 are flat
+  std::uint8_t zStep = 0;   ///< mod 4: z unit = 1, 1/2, 2, 1/4 × the lattice unit
+  /// One byte per vertex ((nx+1)(ny+1), row by row): bits 0–3 level (mod levels); bits 4–5 and
+  /// 6–7 move the vertex by {0, +1/2, −1/2, 0} cell in x and y (collinear, zero-area and
+  /// needle faces).
+  std::vector<std::uint8_t> vertexBytes;
+  /// One byte per cell: bit 0 the other diagonal, bit 1 the cell is removed (holes,
+  /// disconnected parts, unreferenced vertices).
+  std::vector<std::uint8_t> cellBytes;
+  // --- mode 1: a soup of lattice points (count 3 + byte mod 22) and faces (1 + byte mod 64)
+  std::vector<std::array<std::int8_t, 3>> points;  ///< coordinates wrapped into [−8, 8]
+  std::vector<std::array<std::uint8_t, 3>> faces;  ///< indices mod #points
+  // --- both
+  std::vector<SourceSpec> sources;  ///< count 1 + byte mod 3
+  /// bit 0: solve again with stopDistance = stop and compare; bit 1: check d(a, b) = d(b, a).
+  std::uint8_t flags = 0;
+  Quantity stop;  ///< ∈ [0, 64] lattice units
+};
+
+std::vector<std::uint8_t> encode(const PredicateSpec& s);
+std::vector<std::uint8_t> encode(const EdgeUpdateSpec& s);
+std::vector<std::uint8_t> encode(const PropagationSpec& s);
+std::vector<std::uint8_t> encode(const SolverSpec& s);
+
+// === Cases: decoded inputs =====================================================================
+
+struct MeshIoCase {
+  std::string bytes;       ///< the file, without the format byte
+  std::string formatHint;  ///< "" (detect), "off", "obj" or "ply": a first byte 1, 2 or 3 says
+};
+struct PredicateCase {
+  LocalWindow window;
+};
+struct EdgeUpdateCase {
+  double edgeLength = 0.0;
+  std::vector<Interval> before;  ///< ids 1..n
+  Interval incoming;             ///< id n + 1
+  std::string note;              ///< where it came from (a text reproducer's invariant, branch)
+};
+struct PropagationCase {
+  TriangleSoup soup;  ///< vertices v0, v2, v1, w; face 0 = B, face 1 = A
+  SurfacePoint source;
+};
+struct SolverCase {
+  TriangleSoup soup;
+  std::vector<SurfacePoint> sources;
+  std::optional<double> stopDistance;
+  bool checkSymmetry = false;
+  bool planar = false;     ///< a flat grid without moved vertices: the planar oracles apply
+  bool rectangle = false;  ///< … and without removed cells: convex, distances are Euclidean
+};
+using FuzzCase =
+    std::variant<MeshIoCase, PredicateCase, EdgeUpdateCase, PropagationCase, SolverCase>;
+
+/// The case the bytes describe, or nullopt when the target skips them (too long, or a shape the
+/// target does not test: a degenerate range, a mesh the validator refuses, an invalid old list).
+std::optional<FuzzCase> decode(FuzzTarget t, std::span<const std::uint8_t> bytes);
+
+/// The text reproducer of writeReproducer ("geodex-edge-update 1"). Throws InputError when the
+/// text is not one.
+EdgeUpdateCase parseEdgeUpdateReproducer(std::string_view text);
+bool isEdgeUpdateReproducer(std::span<const std::uint8_t> bytes);
+
+// === Checks ====================================================================================
+
+enum class CheckDepth {
+  Fuzzing,  ///< what the fuzz targets run: fuzz_solver uses the cheap invariant tier
+  Full,     ///< every check: the full invariant tier everywhere
+};
+
+struct Verdict {
+  /// The bytes decoded into a case (false: skipped, which is a pass).
+  bool interesting = false;
+  /// Empty when every check passed; else the name of the first broken check: an invariant of
+  /// InvariantChecker ("pointwise-min", …), an oracle ("euclidean-lower-bound", "upper-bound",
+  /// "lipschitz", "planar-agreement", "two-face-distance", "unfolding", "path-length",
+  /// "stop-distance", "symmetry", "edge-query"), "exact-predicates", "child-range", "coverage",
+  /// "soundness", "invented-source", "ids", "unexpected-exception", "validated-mesh-refused",
+  /// "round-trip", "mesh-geometry", "internal-check".
+  std::string failed;
+  std::string message;  ///< what broke, with the numbers
+  std::string summary;  ///< one line on what the case exercised
+  /// G1–G5 (Fig. 6 branches) and D1–D4 (Algorithm 2 reports) the case hit.
+  DegeneracyCounters degeneracies;
+  bool ok() const { return failed.empty(); }
+};
+
+/// Runs the target's checks on a decoded case. Never throws: an exception from the code under
+/// test is a failed check ("unexpected-exception", or the invariant an InvariantViolation names).
+Verdict check(const FuzzCase& c, CheckDepth depth);
+
+/// The per-target checks `check` dispatches to.
+Verdict checkMeshIo(const MeshIoCase& c);
+Verdict checkPredicates(const PredicateCase& c);
+Verdict checkEdgeUpdate(const EdgeUpdateCase& c);
+Verdict checkPropagation(const PropagationCase& c, CheckDepth depth);
+Verdict checkSolver(const SolverCase& c, CheckDepth depth);
+
+/// decode + check. Skipped bytes give an uninteresting passing verdict.
+Verdict replay(FuzzTarget t, std::span<const std::uint8_t> bytes,
+               CheckDepth depth = CheckDepth::Full);
+
+// === Reproducers ===============================================================================
+
+/// The whole file (throws InputError if it cannot be read).
+std::vector<std::uint8_t> readFileBytes(const std::string& path);
+
+/// Which target a file belongs to: a path component named after a target (corpus/<target>/…,
+/// build/fuzz-findings/<target>/…), else the content (a text edge-update reproducer →
+/// fuzz_edge_update; an OFF/OBJ/PLY file → fuzz_mesh_io). nullopt when neither tells.
+std::optional<FuzzTarget> detectTarget(const std::string& path, std::span<const std::uint8_t> bytes);
+
+/// Prints the case readably: the local configuration, the interval lists, or the mesh as a tiny
+/// OFF followed by `source SPEC` lines (SPEC as the CLI's --source takes it).
+void describe(FuzzTarget t, std::span<const std::uint8_t> bytes, std::ostream& out);
+
+/// Draws the case as a plain SVG: predicates — the unfolded face, e0, the window, the wedge from
+/// s and the children on e1/e2; edge updates — the pseudo-sources and the distance functions of
+/// the list before, the incoming interval and the list after, coloured by pseudo-source;
+/// propagation — both faces unfolded into one plane, the source and the intervals after the
+/// solve, coloured by pseudo-source; solver and mesh files — the mesh projected onto its two
+/// widest axes with sources and vertex distances.
+void writeSvg(FuzzTarget t, std::span<const std::uint8_t> bytes, std::ostream& out);
+
+/// `geodex repro FILE [--target T] [--svg OUT]` in one call: detects (or takes) the target,
+/// describes the case, replays it with every check on, prints the verdict, writes the SVG when
+/// asked. Returns 0 when every check passes, 1 when one fails, 2 when the target is unknown or
+/// the file unreadable (with a message on `out`).
+int runRepro(const std::string& path, std::optional<FuzzTarget> target,
+             const std::optional<std::string>& svgPath, std::ostream& out);
+
+}  // namespace geodex::verify

@@ -1,0 +1,2006 @@
+// Fuzz cases: byte formats, property checks and reproducers (see repro.h and docs/fuzzing.md).
+#include "geodex/verify/repro.h"
+
+#include <gmpxx.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <numbers>
+#include <sstream>
+
+#include "geodex/check.h"
+#include "geodex/edge_intervals.h"
+#include "geodex/error.h"
+#include "geodex/geodesic_solver.h"
+#include "geodex/mesh_io.h"
+#include "geodex/observer.h"
+#include "geodex/tolerance.h"
+#include "geodex/verify/invariant_checker.h"
+#include "geodex/verify/oracles.h"
+
+namespace geodex::verify {
+
+// ===  Targets ===================================================================================
+
+std::string_view name(FuzzTarget t) {
+  switch (t) {
+    case FuzzTarget::MeshIo: return "fuzz_mesh_io";
+    case FuzzTarget::Predicates: return "fuzz_predicates";
+    case FuzzTarget::EdgeUpdate: return "fuzz_edge_update";
+    case FuzzTarget::Propagation: return "fuzz_propagation";
+    case FuzzTarget::Solver: return "fuzz_solver";
+  }
+  return "?";
+}
+
+std::optional<FuzzTarget> parseFuzzTarget(std::string_view s) {
+  for (FuzzTarget t : kFuzzTargets) {
+    const std::string_view full = name(t);
+    if (s == full || s == full.substr(5)) return t;
+  }
+  return std::nullopt;
+}
+
+// ===  Byte primitives ===========================================================================
+
+double toleranceOf(Nudge n) {
+  switch (n) {
+    case Nudge::Coincide: return tol::kCoincideRel;
+    case Nudge::Collinear: return tol::kCollinearSin;
+    case Nudge::TinyInterval: return tol::kTinyIntervalRel;
+    case Nudge::FlatFace: return tol::kFlatFaceRel;
+    case Nudge::SnapParam: return tol::kSnapParam;
+    case Nudge::FlatVertexAngle: return tol::kFlatVertexAngle;
+    case Nudge::SameSource: return tol::kSameSourceRel;
+    case Nudge::Continuity: return tol::kContinuityRel;
+  }
+  return 0.0;
+}
+
+Quantity Quantity::lattice(int n) {
+  Quantity q;
+  q.n = static_cast<std::int16_t>(n);
+  return q;
+}
+
+Quantity Quantity::exact(double value) {
+  Quantity q;
+  q.flags = 0x80;
+  q.raw = value;
+  return q;
+}
+
+Quantity Quantity::nudged(int k, Nudge t, bool fineSteps) const {
+  Quantity q = *this;
+  q.nudge = static_cast<std::int8_t>(k);
+  q.flags = static_cast<std::uint8_t>((q.flags & 0xF0) | static_cast<std::uint8_t>(t) |
+                                      (fineSteps ? 0x08 : 0x00));
+  return q;
+}
+
+Quantity Quantity::times8(int e) const {
+  Quantity q = *this;
+  q.flags = static_cast<std::uint8_t>((q.flags & 0x8F) | ((e & 7) << 4));
+  return q;
+}
+
+std::int16_t ByteReader::i16() {
+  const std::uint16_t lo = u8();
+  const std::uint16_t hi = u8();
+  return static_cast<std::int16_t>(lo | (hi << 8));
+}
+
+double ByteReader::f64() {
+  std::uint64_t bits = 0;
+  for (int i = 0; i < 8; ++i) bits |= static_cast<std::uint64_t>(u8()) << (8 * i);
+  double d;
+  std::memcpy(&d, &bits, sizeof d);
+  return std::isfinite(d) ? d : 0.0;
+}
+
+Quantity ByteReader::quantity() {
+  Quantity q;
+  q.n = i16();
+  q.nudge = i8();
+  q.flags = u8();
+  if (q.isRaw()) q.raw = f64();
+  return q;
+}
+
+void ByteWriter::i16(std::int16_t v) {
+  const auto u = static_cast<std::uint16_t>(v);
+  u8(static_cast<std::uint8_t>(u & 0xFF));
+  u8(static_cast<std::uint8_t>(u >> 8));
+}
+
+void ByteWriter::f64(double v) {
+  std::uint64_t bits;
+  std::memcpy(&bits, &v, sizeof bits);
+  for (int i = 0; i < 8; ++i) u8(static_cast<std::uint8_t>(bits >> (8 * i)));
+}
+
+void ByteWriter::quantity(const Quantity& q) {
+  i16(q.n);
+  i8(q.nudge);
+  u8(q.flags);
+  if (q.isRaw()) f64(q.raw);
+}
+
+namespace {
+
+// ===  Field values ==============================================================================
+
+int wrapInt(long v, long lo, long hi) {
+  const long span = hi - lo + 1;
+  return static_cast<int>(lo + ((v - lo) % span + span) % span);
+}
+
+/// The lattice part of q: n wrapped into [lo, hi], or the raw value clamped into [lo, hi] × 8^e;
+/// times 8^e. In lattice units.
+double latticeValue(const Quantity& q, long lo, long hi) {
+  const double mul = std::ldexp(1.0, 3 * q.exponent());
+  if (q.isRaw()) return std::clamp(q.raw, lo * mul, hi * mul);
+  return wrapInt(q.n, lo, hi) * mul;
+}
+
+double nudgeValue(const Quantity& q, double lengthScale) {
+  return q.nudge * (q.fine() ? 1.0 / 16.0 : 1.0) * toleranceOf(q.nudgeKind()) * lengthScale;
+}
+
+/// A field: lattice value × unit + nudge × tolerance × lengthScale.
+double fieldValue(const Quantity& q, long lo, long hi, double unit, double lengthScale) {
+  return latticeValue(q, lo, hi) * unit + nudgeValue(q, lengthScale);
+}
+
+double unitOf(std::int8_t unitExp) { return std::ldexp(1.0, wrapInt(unitExp, -20, 20)); }
+
+/// Edge length (world) and its lattice extent nL.
+struct LatticeLength {
+  double length;
+  long n;
+};
+LatticeLength edgeLengthOf(const Quantity& q, double unit) {
+  const double lat = latticeValue(q, 1, 64);
+  const double length = lat * unit + nudgeValue(q, lat * unit);
+  return {length, std::clamp(static_cast<long>(std::ceil(lat)), 1L, 1L << 24)};
+}
+
+// ===  Specs: reading and writing ================================================================
+
+PredicateSpec readPredicateSpec(ByteReader& r) {
+  PredicateSpec s;
+  s.unitExp = r.i8();
+  s.edgeLength = r.quantity();
+  s.apexX = r.quantity();
+  s.apexY = r.quantity();
+  s.b0 = r.quantity();
+  s.b1 = r.quantity();
+  s.sourceX = r.quantity();
+  s.sourceY = r.quantity();
+  return s;
+}
+
+IntervalSpec readIntervalSpec(ByteReader& r) {
+  IntervalSpec s;
+  s.start = r.quantity();
+  s.extent = r.quantity();
+  s.sourceX = r.quantity();
+  s.sourceY = r.quantity();
+  s.sigma = r.quantity();
+  s.flags = r.u8();
+  s.ref = r.u8();
+  return s;
+}
+
+void writeIntervalSpec(ByteWriter& w, const IntervalSpec& s) {
+  w.quantity(s.start);
+  w.quantity(s.extent);
+  w.quantity(s.sourceX);
+  w.quantity(s.sourceY);
+  w.quantity(s.sigma);
+  w.u8(s.flags);
+  w.u8(s.ref);
+}
+
+EdgeUpdateSpec readEdgeUpdateSpec(ByteReader& r) {
+  EdgeUpdateSpec s;
+  s.unitExp = r.i8();
+  s.edgeLength = r.quantity();
+  const int count = r.u8() % (kMaxFuzzOldIntervals + 1);
+  for (int i = 0; i < count; ++i) s.before.push_back(readIntervalSpec(r));
+  s.incoming = readIntervalSpec(r);
+  return s;
+}
+
+SourceSpec readSourceSpec(ByteReader& r) {
+  SourceSpec s;
+  s.kind = r.u8();
+  s.element = r.u8();
+  s.corner = r.u8();
+  s.t = r.quantity();
+  s.a = r.quantity();
+  s.b = r.quantity();
+  return s;
+}
+
+void writeSourceSpec(ByteWriter& w, const SourceSpec& s) {
+  w.u8(s.kind);
+  w.u8(s.element);
+  w.u8(s.corner);
+  w.quantity(s.t);
+  w.quantity(s.a);
+  w.quantity(s.b);
+}
+
+PropagationSpec readPropagationSpec(ByteReader& r) {
+  PropagationSpec s;
+  s.unitExp = r.i8();
+  for (auto& p : s.points)
+    for (auto& c : p) c = r.quantity();
+  s.winding = r.u8();
+  s.source = readSourceSpec(r);
+  return s;
+}
+
+/// The grid size a spec's nx, ny bytes stand for.
+std::pair<int, int> gridSize(std::uint8_t nxByte, std::uint8_t nyByte) {
+  const int nx = 1 + nxByte % 8;
+  const int ny = std::min(1 + nyByte % 8, kMaxFuzzGridCells / nx);
+  return {nx, ny};
+}
+
+SolverSpec readSolverSpec(ByteReader& r) {
+  SolverSpec s;
+  s.unitExp = r.i8();
+  s.mode = r.u8();
+  if (s.mode % 2 == 0) {
+    s.nx = r.u8();
+    s.ny = r.u8();
+    s.levels = r.u8();
+    s.zStep = r.u8();
+    const auto [nx, ny] = gridSize(s.nx, s.ny);
+    for (int i = 0; i < (nx + 1) * (ny + 1); ++i) s.vertexBytes.push_back(r.u8());
+    for (int i = 0; i < nx * ny; ++i) s.cellBytes.push_back(r.u8());
+  } else {
+    const int np = 3 + r.u8() % (kMaxFuzzSoupPoints - 2);
+    for (int i = 0; i < np; ++i) s.points.push_back({r.i8(), r.i8(), r.i8()});
+    const int nf = 1 + r.u8() % kMaxFuzzFaces;
+    for (int i = 0; i < nf; ++i) s.faces.push_back({r.u8(), r.u8(), r.u8()});
+  }
+  const int ns = 1 + r.u8() % kMaxFuzzSources;
+  for (int i = 0; i < ns; ++i) s.sources.push_back(readSourceSpec(r));
+  s.flags = r.u8();
+  s.stop = r.quantity();
+  return s;
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> encode(const PredicateSpec& s) {
+  ByteWriter w;
+  w.i8(s.unitExp);
+  for (const Quantity* q : {&s.edgeLength, &s.apexX, &s.apexY, &s.b0, &s.b1, &s.sourceX, &s.sourceY})
+    w.quantity(*q);
+  return w.bytes();
+}
+
+std::vector<std::uint8_t> encode(const EdgeUpdateSpec& s) {
+  ByteWriter w;
+  w.i8(s.unitExp);
+  w.quantity(s.edgeLength);
+  GEODEX_REQUIRE(s.before.size() <= static_cast<std::size_t>(kMaxFuzzOldIntervals),
+                 "at most " << kMaxFuzzOldIntervals << " old intervals");
+  w.u8(static_cast<std::uint8_t>(s.before.size()));
+  for (const IntervalSpec& i : s.before) writeIntervalSpec(w, i);
+  writeIntervalSpec(w, s.incoming);
+  return w.bytes();
+}
+
+std::vector<std::uint8_t> encode(const PropagationSpec& s) {
+  ByteWriter w;
+  w.i8(s.unitExp);
+  for (const auto& p : s.points)
+    for (const auto& c : p) w.quantity(c);
+  w.u8(s.winding);
+  writeSourceSpec(w, s.source);
+  return w.bytes();
+}
+
+std::vector<std::uint8_t> encode(const SolverSpec& s) {
+  ByteWriter w;
+  w.i8(s.unitExp);
+  w.u8(s.mode);
+  if (s.mode % 2 == 0) {
+    w.u8(s.nx);
+    w.u8(s.ny);
+    w.u8(s.levels);
+    w.u8(s.zStep);
+    const auto [nx, ny] = gridSize(s.nx, s.ny);
+    for (int i = 0; i < (nx + 1) * (ny + 1); ++i)
+      w.u8(i < static_cast<int>(s.vertexBytes.size()) ? s.vertexBytes[i] : 0);
+    for (int i = 0; i < nx * ny; ++i)
+      w.u8(i < static_cast<int>(s.cellBytes.size()) ? s.cellBytes[i] : 0);
+  } else {
+    GEODEX_REQUIRE(s.points.size() >= 3 && s.points.size() <= kMaxFuzzSoupPoints,
+                   "3 to " << kMaxFuzzSoupPoints << " soup points");
+    GEODEX_REQUIRE(!s.faces.empty() && s.faces.size() <= kMaxFuzzFaces,
+                   "1 to " << kMaxFuzzFaces << " soup faces");
+    w.u8(static_cast<std::uint8_t>(s.points.size() - 3));
+    for (const auto& p : s.points)
+      for (std::int8_t c : p) w.i8(c);
+    w.u8(static_cast<std::uint8_t>(s.faces.size() - 1));
+    for (const auto& f : s.faces)
+      for (std::uint8_t c : f) w.u8(c);
+  }
+  GEODEX_REQUIRE(!s.sources.empty() && s.sources.size() <= kMaxFuzzSources,
+                 "1 to " << kMaxFuzzSources << " sources");
+  w.u8(static_cast<std::uint8_t>(s.sources.size() - 1));
+  for (const SourceSpec& src : s.sources) writeSourceSpec(w, src);
+  w.u8(s.flags);
+  w.quantity(s.stop);
+  return w.bytes();
+}
+
+namespace {
+
+// ===  Specs → cases =============================================================================
+
+std::optional<PredicateCase> makePredicateCase(const PredicateSpec& s) {
+  const double unit = unitOf(s.unitExp);
+  const auto [L, nL] = edgeLengthOf(s.edgeLength, unit);
+  PredicateCase c;
+  LocalWindow& w = c.window;
+  w.edgeLength = L;
+  w.apex = Vec2(fieldValue(s.apexX, -2 * nL, 3 * nL, unit, L),
+                std::abs(fieldValue(s.apexY, 0, 2 * nL, unit, L)));
+  double b0 = fieldValue(s.b0, 0, nL, unit, L), b1 = fieldValue(s.b1, 0, nL, unit, L);
+  if (b0 > b1) std::swap(b0, b1);
+  w.b0 = std::max(b0, 0.0);
+  w.b1 = std::min(b1, L);
+  w.source = Vec2(fieldValue(s.sourceX, -4 * nL, 5 * nL, unit, L),
+                  -std::abs(fieldValue(s.sourceY, -4 * nL, 0, unit, L)));
+  if (!(L > 0.0) || !(w.b0 < w.b1) || !isFinite(w.apex) || !isFinite(w.source)) return std::nullopt;
+  return c;
+}
+
+Interval makeInterval(const IntervalSpec& s, bool incoming, double cursor, double L, long nL,
+                      double unit, const std::vector<Interval>& earlier, bool& ok) {
+  Interval w;
+  if (incoming) {
+    double b0 = fieldValue(s.start, 0, nL, unit, L), b1 = fieldValue(s.extent, 0, nL, unit, L);
+    if (b0 > b1) std::swap(b0, b1);
+    w.b0 = std::max(b0, 0.0);
+    w.b1 = std::min(b1, L);
+  } else {
+    w.b0 = cursor + std::abs(fieldValue(s.start, 0, nL, unit, L));
+    w.b1 = std::min(w.b0 + std::abs(fieldValue(s.extent, 0, nL, unit, L)), L);
+  }
+  ok = w.b0 < w.b1;
+  const Interval* ref = earlier.empty() ? nullptr : &earlier[s.ref % earlier.size()];
+  if ((s.flags & 8) != 0 && ref != nullptr) {
+    w.source = Vec2(ref->source.x() + fieldValue(s.sourceX, -nL, nL, unit, L),
+                    std::abs(ref->source.y() + fieldValue(s.sourceY, -nL, nL, unit, L)));
+  } else {
+    w.source = Vec2(fieldValue(s.sourceX, -2 * nL, 3 * nL, unit, L),
+                    std::abs(fieldValue(s.sourceY, 0, 2 * nL, unit, L)));
+  }
+  if ((s.flags & 16) != 0 && ref != nullptr) {
+    w.sigma = std::abs(ref->sigma + fieldValue(s.sigma, -nL, nL, unit, L));
+  } else {
+    w.sigma = std::abs(fieldValue(s.sigma, 0, 4 * nL, unit, L));
+  }
+  w.side = s.flags & 1;
+  w.origin = -1;
+  const double mid = 0.5 * (w.b0 + w.b1);
+  switch ((s.flags >> 1) & 3) {
+    case 1: w.markPropagated(); break;
+    case 2: w.pb0 = w.b0, w.pb1 = mid; break;
+    case 3: w.pb0 = mid, w.pb1 = w.b1; break;
+    default: break;
+  }
+  ok = ok && isFinite(w.source) && std::isfinite(w.sigma);
+  return w;
+}
+
+std::optional<EdgeUpdateCase> makeEdgeUpdateCase(const EdgeUpdateSpec& s) {
+  const double unit = unitOf(s.unitExp);
+  const auto [L, nL] = edgeLengthOf(s.edgeLength, unit);
+  if (!(L > 0.0)) return std::nullopt;
+  EdgeUpdateCase c;
+  c.edgeLength = L;
+  double cursor = 0.0;
+  for (const IntervalSpec& is : s.before) {
+    if (cursor >= L) break;
+    bool ok = false;
+    Interval w = makeInterval(is, false, cursor, L, nL, unit, c.before, ok);
+    if (w.b0 >= L) break;
+    cursor = w.b1;
+    if (!ok) continue;
+    w.id = static_cast<std::uint32_t>(c.before.size() + 1);
+    c.before.push_back(w);
+  }
+  bool ok = false;
+  c.incoming = makeInterval(s.incoming, true, 0.0, L, nL, unit, c.before, ok);
+  c.incoming.id = static_cast<std::uint32_t>(c.before.size() + 1);
+  c.incoming.origin = -2;
+  if (!ok) return std::nullopt;
+  // Algorithm 2 starts from a list step 6 accepts; a list it rejects tests nothing.
+  std::string why;
+  if (!InvariantChecker::checkList(c.before, L, why).empty()) return std::nullopt;
+  return c;
+}
+
+SurfacePoint makeSource(const SourceSpec& s, const TriangleSoup& soup) {
+  const auto nf = soup.faces.size();
+  const auto& face = soup.faces[s.element % nf];
+  switch (s.kind % 3) {
+    case 0: {
+      Index v = static_cast<Index>(s.element % soup.positions.size());
+      bool referenced = false;
+      for (const auto& f : soup.faces)
+        if (f[0] == v || f[1] == v || f[2] == v) referenced = true;
+      if (!referenced) v = face[s.corner % 3];
+      return SurfacePoint::atVertex(v);
+    }
+    case 1: {
+      const int k = s.corner % 3;
+      const double t = std::clamp(fieldValue(s.t, 0, 16, 1.0 / 16.0, 1.0), 0.0, 1.0);
+      return SurfacePoint::onEdge(face[k], face[(k + 1) % 3], t);
+    }
+    default: {
+      double a = std::clamp(fieldValue(s.a, 0, 16, 1.0 / 16.0, 1.0), 0.0, 1.0);
+      double b = std::clamp(fieldValue(s.b, 0, 16, 1.0 / 16.0, 1.0), 0.0, 1.0);
+      if (a + b > 1.0) a = 1.0 - a, b = 1.0 - b;
+      const double c = std::max(0.0, 1.0 - a - b);
+      return SurfacePoint::inFace(s.element % nf, a, b, c);
+    }
+  }
+}
+
+bool soupValid(const TriangleSoup& soup) {
+  std::vector<MeshIssue> issues;
+  validateMesh(soup, issues);
+  for (const MeshIssue& i : issues)
+    if (i.severity == Severity::Error) return false;
+  return true;
+}
+
+std::optional<PropagationCase> makePropagationCase(const PropagationSpec& s) {
+  const double unit = unitOf(s.unitExp);
+  PropagationCase c;
+  for (const auto& p : s.points) {
+    Vec3 x;
+    for (int k = 0; k < 3; ++k) x[k] = fieldValue(p[k], -16, 16, unit, 16 * unit);
+    c.soup.positions.push_back(x);
+  }
+  // v0 = 0, v2 = 1, v1 = 2, w = 3.
+  c.soup.faces.push_back((s.winding & 1) ? std::array<Index, 3>{0, 1, 2} : std::array<Index, 3>{0, 2, 1});
+  c.soup.faces.push_back((s.winding & 2) ? std::array<Index, 3>{1, 0, 3} : std::array<Index, 3>{0, 1, 3});
+  if (!soupValid(c.soup)) return std::nullopt;
+  c.source = makeSource(s.source, c.soup);
+  return c;
+}
+
+std::optional<SolverCase> makeSolverCase(const SolverSpec& s) {
+  const double unit = unitOf(s.unitExp);
+  SolverCase c;
+  TriangleSoup& soup = c.soup;
+  if (s.mode % 2 == 0) {
+    const auto [nx, ny] = gridSize(s.nx, s.ny);
+    const int levels = std::max(1, s.levels % 5);
+    static constexpr double kZSteps[] = {1.0, 0.5, 2.0, 0.25};
+    static constexpr double kJitter[] = {0.0, 0.5, -0.5, 0.0};
+    const double zUnit = kZSteps[s.zStep % 4] * unit;
+    bool jittered = false, flat = true, removed = false;
+    double z0 = 0.0;
+    for (int j = 0; j <= ny; ++j) {
+      for (int i = 0; i <= nx; ++i) {
+        const std::size_t k = static_cast<std::size_t>(j * (nx + 1) + i);
+        const std::uint8_t b = k < s.vertexBytes.size() ? s.vertexBytes[k] : 0;
+        const double dx = kJitter[(b >> 4) & 3], dy = kJitter[(b >> 6) & 3];
+        const double z = ((b & 15) % levels) * zUnit;
+        if (k == 0) z0 = z;
+        flat = flat && z == z0;
+        jittered = jittered || dx != 0.0 || dy != 0.0;
+        soup.positions.emplace_back((i + dx) * unit, (j + dy) * unit, z);
+      }
+    }
+    for (int j = 0; j < ny; ++j) {
+      for (int i = 0; i < nx; ++i) {
+        const std::size_t k = static_cast<std::size_t>(j * nx + i);
+        const std::uint8_t b = k < s.cellBytes.size() ? s.cellBytes[k] : 0;
+        if ((b & 2) != 0) {
+          removed = true;
+          continue;
+        }
+        const Index v00 = j * (nx + 1) + i, v10 = v00 + 1, v01 = v00 + (nx + 1), v11 = v01 + 1;
+        if ((b & 1) == 0) {
+          soup.faces.push_back({v00, v10, v11});
+          soup.faces.push_back({v00, v11, v01});
+        } else {
+          soup.faces.push_back({v00, v10, v01});
+          soup.faces.push_back({v10, v11, v01});
+        }
+      }
+    }
+    c.planar = flat && !jittered;
+    c.rectangle = c.planar && !removed;
+  } else {
+    for (const auto& p : s.points) {
+      soup.positions.emplace_back(wrapInt(p[0], -8, 8) * unit, wrapInt(p[1], -8, 8) * unit,
+                                  wrapInt(p[2], -8, 8) * unit);
+    }
+    const auto np = static_cast<Index>(soup.positions.size());
+    for (const auto& f : s.faces) soup.faces.push_back({f[0] % np, f[1] % np, f[2] % np});
+  }
+  if (soup.faces.empty() || soup.faces.size() > static_cast<std::size_t>(kMaxFuzzFaces)) return std::nullopt;
+  if (!soupValid(soup)) return std::nullopt;
+  for (const SourceSpec& src : s.sources) c.sources.push_back(makeSource(src, soup));
+  if ((s.flags & 1) != 0) c.stopDistance = std::abs(fieldValue(s.stop, 0, 64, unit, unit));
+  c.checkSymmetry = (s.flags & 2) != 0;
+  return c;
+}
+
+// ===  Text edge-update reproducers ==============================================================
+
+constexpr std::string_view kReproducerMagic = "geodex-edge-update 1";
+
+}  // namespace
+
+bool isEdgeUpdateReproducer(std::span<const std::uint8_t> bytes) {
+  const std::string_view text(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+  std::size_t pos = 0;
+  while (pos < text.size()) {
+    std::size_t end = text.find('\n', pos);
+    if (end == std::string_view::npos) end = text.size();
+    std::string_view line = text.substr(pos, end - pos);
+    while (!line.empty() && (line.back() == '\r' || line.back() == ' ')) line.remove_suffix(1);
+    pos = end + 1;
+    if (line.empty() || line.front() == '#') continue;
+    return line == kReproducerMagic;
+  }
+  return false;
+}
+
+EdgeUpdateCase parseEdgeUpdateReproducer(std::string_view text) {
+  EdgeUpdateCase c;
+  std::istringstream in{std::string(text)};
+  std::string line;
+  int lineNo = 0;
+  bool sawMagic = false, sawIncoming = false, sawLength = false;
+  std::string invariant, branch;
+  std::size_t announced = 0;
+  auto fail = [&](const std::string& what) -> void {
+    throw InputError("syntax", "line " + std::to_string(lineNo) + ": " + what);
+  };
+  auto readInterval = [&](std::istringstream& ls) {
+    Interval w;
+    double sx = 0, sy = 0;
+    int side = 0;
+    if (!(ls >> w.b0 >> w.b1 >> sx >> sy >> w.sigma >> side)) fail("expected b0 b1 sx sy sigma side");
+    w.source = Vec2(sx, sy);
+    w.side = static_cast<std::uint8_t>(side != 0);
+    return w;
+  };
+  while (std::getline(in, line)) {
+    ++lineNo;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.empty() || line.front() == '#') continue;
+    std::istringstream ls(line);
+    std::string key;
+    ls >> key;
+    if (!sawMagic) {
+      if (line != kReproducerMagic) fail("expected '" + std::string(kReproducerMagic) + "'");
+      sawMagic = true;
+    } else if (key == "invariant") {
+      ls >> invariant;
+    } else if (key == "branch") {
+      ls >> branch;
+    } else if (key == "edge-length") {
+      if (!(ls >> c.edgeLength)) fail("expected the edge length");
+      sawLength = true;
+    } else if (key == "before") {
+      if (!(ls >> announced)) fail("expected the number of intervals");
+    } else if (key == "interval") {
+      Interval w = readInterval(ls);
+      w.id = static_cast<std::uint32_t>(c.before.size() + 1);
+      w.origin = -1;
+      c.before.push_back(w);
+    } else if (key == "incoming") {
+      c.incoming = readInterval(ls);
+      c.incoming.origin = -2;
+      sawIncoming = true;
+    } else {
+      fail("unknown key '" + key + "'");
+    }
+  }
+  if (!sawMagic) throw InputError("syntax", "not a geodex edge-update reproducer");
+  if (!sawLength || !sawIncoming) throw InputError("syntax", "edge-length or incoming missing");
+  if (announced != c.before.size()) {
+    throw InputError("syntax", "'before " + std::to_string(announced) + "' but " +
+                                   std::to_string(c.before.size()) + " interval lines");
+  }
+  c.incoming.id = static_cast<std::uint32_t>(c.before.size() + 1);
+  c.note = "text reproducer: invariant " + invariant + ", branch " + branch;
+  return c;
+}
+
+// ===  Decoding ==================================================================================
+
+std::optional<FuzzCase> decode(FuzzTarget t, std::span<const std::uint8_t> bytes) {
+  if (t == FuzzTarget::MeshIo) {
+    if (bytes.size() > kMaxMeshIoInputBytes) return std::nullopt;
+    MeshIoCase c;
+    std::size_t skip = 0;
+    if (!bytes.empty() && bytes[0] >= 1 && bytes[0] <= 3) {
+      static const char* const kHints[] = {"off", "obj", "ply"};
+      c.formatHint = kHints[bytes[0] - 1];
+      skip = 1;
+    }
+    c.bytes.assign(reinterpret_cast<const char*>(bytes.data()) + skip, bytes.size() - skip);
+    return c;
+  }
+  if (t == FuzzTarget::EdgeUpdate && isEdgeUpdateReproducer(bytes)) {
+    try {
+      EdgeUpdateCase c = parseEdgeUpdateReproducer(
+          std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
+      if (!(c.edgeLength > 0.0) || !(c.incoming.b0 >= 0.0 && c.incoming.b1 <= c.edgeLength &&
+                                     c.incoming.b0 < c.incoming.b1))
+        return std::nullopt;
+      return c;
+    } catch (const InputError&) {
+      return std::nullopt;
+    }
+  }
+  if (bytes.size() > kMaxFuzzInputBytes) return std::nullopt;
+  ByteReader r(bytes);
+  switch (t) {
+    case FuzzTarget::Predicates:
+      if (auto c = makePredicateCase(readPredicateSpec(r))) return *c;
+      return std::nullopt;
+    case FuzzTarget::EdgeUpdate:
+      if (auto c = makeEdgeUpdateCase(readEdgeUpdateSpec(r))) return *c;
+      return std::nullopt;
+    case FuzzTarget::Propagation:
+      if (auto c = makePropagationCase(readPropagationSpec(r))) return *c;
+      return std::nullopt;
+    case FuzzTarget::Solver:
+      if (auto c = makeSolverCase(readSolverSpec(r))) return *c;
+      return std::nullopt;
+    case FuzzTarget::MeshIo: break;
+  }
+  return std::nullopt;
+}
+
+// ===  Checks: shared ============================================================================
+
+namespace {
+
+Verdict& fail(Verdict& v, std::string check, std::string message) {
+  if (v.failed.empty()) {
+    v.failed = std::move(check);
+    v.message = std::move(message);
+  }
+  return v;
+}
+
+std::string fmt(double x) {
+  std::ostringstream os;
+  os << std::setprecision(17) << x;
+  return os.str();
+}
+
+std::string fmt(const Vec2& p) { return "(" + fmt(p.x()) + ", " + fmt(p.y()) + ")"; }
+
+std::string describeInterval(const Interval& w) {
+  std::ostringstream os;
+  os << std::setprecision(17) << "[" << w.b0 << ", " << w.b1 << "] s=(" << w.source.x() << ", "
+     << w.source.y() << ") sigma=" << w.sigma << " side=" << int(w.side);
+  if (!w.nothingPropagated()) os << " propagated=[" << w.pb0 << ", " << w.pb1 << "]";
+  return os.str();
+}
+
+double cross2(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+/// |sin| of the angle between a and b, or 2 when they point apart (or one is zero).
+double sinAngle(const Vec2& a, const Vec2& b) {
+  const double na = a.norm(), nb = b.norm();
+  if (na == 0.0 || nb == 0.0 || a.dot(b) <= 0.0) return 2.0;
+  return std::abs(cross2(a, b)) / (na * nb);
+}
+
+// ===  fuzz_predicates: the Fig. 6 tree evaluated exactly ========================================
+// Every predicate of propagateLocal has the form "q ≤ k · √S2" (q and S2 rational in the inputs,
+// k a tolerance). Evaluated on GMP rationals from the exact double inputs, it is *clearly* true
+// when q ≤ k√S2 / 10 and clearly false when q ≥ 11 k√S2 (10× the tolerance beyond the boundary);
+// in between the ε-decision may go either way and the case says nothing about the predicates.
+
+using Rat = mpq_class;
+enum class Tri { True, False, Near };
+
+Tri decideLeq(const Rat& q, double k, const Rat& S2) {
+  const Rat kk(k);
+  auto leq = [&](const Rat& m) {  // q ≤ m·k·√S2, with m·k ≥ 0
+    if (sgn(q) <= 0) return true;
+    return q * q <= m * m * kk * kk * S2;
+  };
+  if (leq(Rat(1, 10))) return Tri::True;
+  if (!leq(Rat(11))) return Tri::False;
+  return Tri::Near;
+}
+
+Rat absRat(const Rat& x) { return sgn(x) < 0 ? Rat(-x) : x; }
+
+struct ExactFig6 {
+  std::optional<Fig6Branch> branch;  ///< nullopt: a predicate on the path is near its boundary
+  std::string nearWhat;
+};
+
+ExactFig6 exactFig6(const LocalWindow& w) {
+  const Rat L(w.edgeLength), ax(w.apex.x()), ay(w.apex.y()), b0(w.b0), b1(w.b1);
+  const Rat sx(w.source.x()), sy(w.source.y());
+  Rat S2 = L * L;
+  S2 = std::max(S2, Rat(ax * ax + ay * ay));
+  S2 = std::max(S2, Rat((ax - L) * (ax - L) + ay * ay));
+  ExactFig6 r;
+  auto near = [&](const char* what) {
+    r.nearWhat = what;
+    return r;
+  };
+  const Tri flat = decideLeq(ay, tol::kFlatFaceRel, S2);
+  if (flat == Tri::Near) return near("apex height vs kFlatFaceRel");
+  if (flat == Tri::True) return r.branch = Fig6Branch::ZeroAreaFace, r;
+  const Tri g1 = decideLeq(absRat(sy), tol::kCoincideRel, S2);
+  if (g1 == Tri::Near) return near("|s.y| vs kCoincideRel (G1)");
+  if (g1 == Tri::True) {
+    const Tri in0 = decideLeq(b0 - sx, tol::kCoincideRel, S2);
+    const Tri in1 = decideLeq(sx - b1, tol::kCoincideRel, S2);
+    if (in0 == Tri::Near || in1 == Tri::Near) return near("s.x vs [b0, b1] (G1 inside)");
+    return r.branch = (in0 == Tri::True && in1 == Tri::True) ? Fig6Branch::G1Inside
+                                                                : Fig6Branch::G1Outside,
+           r;
+  }
+  // sideOfRay(s, b, v1): z = (b − s) × (v1 − b), collinear when |z| ≤ kCollinearSin |b − s| |v1 − b|.
+  auto side = [&](const Rat& bx, Tri& collinear) {
+    const Rat ux = bx - sx, uy = -sy, vx = ax - bx, vy = ay;
+    const Rat z = ux * vy - uy * vx;
+    collinear = decideLeq(absRat(z), tol::kCollinearSin, Rat((ux * ux + uy * uy) * (vx * vx + vy * vy)));
+    return sgn(z);
+  };
+  Tri col0, col1;
+  const int z0 = side(b0, col0);
+  if (col0 == Tri::Near) return near("s, b0, v1 collinearity (G2/G4)");
+  if (col0 == Tri::True) {
+    const Tri atV0 = decideLeq(b0, tol::kCoincideRel, S2);
+    if (atV0 == Tri::Near) return near("b0 = v0 (G4 vs G2)");
+    return r.branch = atV0 == Tri::True ? Fig6Branch::G4 : Fig6Branch::G2, r;
+  }
+  const int z1 = side(b1, col1);
+  if (col1 == Tri::Near) return near("s, b1, v1 collinearity (G3/G5)");
+  if (col1 == Tri::True) {
+    const Tri atV2 = decideLeq(L - b1, tol::kCoincideRel, S2);
+    if (atV2 == Tri::Near) return near("b1 = v2 (G5 vs G3)");
+    return r.branch = atV2 == Tri::True ? Fig6Branch::G5 : Fig6Branch::G3, r;
+  }
+  if (z0 > 0) return r.branch = Fig6Branch::LeftOfWedge, r;
+  if (z1 < 0) return r.branch = Fig6Branch::RightOfWedge, r;
+  return r.branch = Fig6Branch::InsideWedge, r;
+}
+
+struct Exit {
+  int edge = 0;  ///< 0: none found
+  double t = 0.0;
+  Vec2 point{0.0, 0.0};
+};
+
+/// Where the ray from s through p (p on e0, s below it) leaves the face v0 v1 v2.
+Exit exitOf(const Vec2& s, const Vec2& p, const Vec2& v0, const Vec2& v1, const Vec2& v2) {
+  const Vec2 d = p - s;
+  Exit best;
+  double bestLambda = -INFINITY;
+  const Vec2 A[2] = {v0, v1}, B[2] = {v1, v2};
+  for (int k = 0; k < 2; ++k) {
+    const Vec2 e = B[k] - A[k];
+    const double denom = cross2(e, d);
+    if (denom == 0.0) continue;
+    const double t = cross2(s - A[k], d) / denom;
+    const double lambda = cross2(A[k] - s, e) / cross2(d, e);
+    if (!(t >= -1e-9 && t <= 1.0 + 1e-9)) continue;
+    if (lambda > bestLambda) {
+      bestLambda = lambda;
+      best.edge = k + 1;
+      best.t = std::clamp(t, 0.0, 1.0);
+      best.point = A[k] + best.t * e;
+    }
+  }
+  return best;
+}
+
+Vec2 childPoint(const LocalWindow& w, int edge, double t) {
+  const Vec2 v0(0.0, 0.0), v2(w.edgeLength, 0.0);
+  return edge == 1 ? Vec2(v0 + t * (w.apex - v0)) : Vec2(w.apex + t * (v2 - w.apex));
+}
+
+std::string describeLocal(const LocalWindow& w) {
+  std::ostringstream os;
+  os << std::setprecision(17) << "L=" << w.edgeLength << " apex=(" << w.apex.x() << ", "
+     << w.apex.y() << ") window=[" << w.b0 << ", " << w.b1 << "] s=(" << w.source.x() << ", "
+     << w.source.y() << ")";
+  return os.str();
+}
+
+std::string describeResult(const LocalPropagation& r) {
+  std::ostringstream os;
+  os << std::setprecision(17) << name(r.branch);
+  for (int c = 0; c < r.numChildren; ++c)
+    os << " e" << int(r.children[c].edge) << "[" << r.children[c].t0 << ", " << r.children[c].t1 << "]";
+  return os.str();
+}
+
+}  // namespace
+
+Verdict checkPredicates(const PredicateCase& c) {
+  Verdict v;
+  v.interesting = true;
+  const LocalWindow& w = c.window;
+  LocalPropagation r;
+  try {
+    r = propagateLocal(w);
+  } catch (const std::exception& e) {
+    return fail(v, "unexpected-exception", std::string("propagateLocal threw: ") + e.what());
+  }
+  if (const auto k = degeneracyOf(r.branch)) ++v.degeneracies[*k];
+  v.summary = describeResult(r);
+  const std::string where = " in " + describeLocal(w) + " → " + describeResult(r);
+
+  // (b) the children's ranges.
+  if (r.numChildren > 2) return fail(v, "child-range", "more than two children" + where);
+  for (int i = 0; i < r.numChildren; ++i) {
+    const LocalChild& ch = r.children[i];
+    if ((ch.edge != 1 && ch.edge != 2) || !(ch.t0 >= 0.0 && ch.t0 <= ch.t1 && ch.t1 <= 1.0))
+      return fail(v, "child-range", "child " + std::to_string(i) + " outside 0 <= t0 <= t1 <= 1" + where);
+    if (i == 1 && ch.edge == r.children[0].edge)
+      return fail(v, "child-range", "two children on the same edge" + where);
+  }
+
+  // (a) the branch agrees with the exact tree where every predicate on its path is clear.
+  const ExactFig6 exact = exactFig6(w);
+  if (exact.branch && *exact.branch != r.branch) {
+    return fail(v, "exact-predicates",
+                "exactly evaluated the tree ends in " + std::string(name(*exact.branch)) + where);
+  }
+  if (!exact.branch) v.summary += " (near: " + exact.nearWhat + ")";
+
+  // (c) coverage and soundness. Along e0 (G1) and through a zero-area face the rays graze the
+  // edges: the whole-edge children are the paper's contract there, nothing to sample.
+  if (r.branch == Fig6Branch::ZeroAreaFace || r.branch == Fig6Branch::G1Inside ||
+      r.branch == Fig6Branch::G1Outside)
+    return v;
+  const Vec2 v0(0.0, 0.0), v2(w.edgeLength, 0.0), v1 = w.apex, s = w.source;
+  const Vec2 b0(w.b0, 0.0), b1(w.b1, 0.0);
+  const double scale = localScale(w);
+  // An ε-decision may move a boundary ray by the collinearity angle, or by a coincidence
+  // distance seen from s; 100× that is the slack (bugs move rays by far more).
+  const double kappa =
+      100.0 * (tol::kCollinearSin + tol::kCoincideRel * scale / std::min((b0 - s).norm(), (b1 - s).norm()));
+  std::vector<Vec2> childEnds;
+  for (int i = 0; i < r.numChildren; ++i) {
+    childEnds.push_back(childPoint(w, r.children[i].edge, r.children[i].t0));
+    childEnds.push_back(childPoint(w, r.children[i].edge, r.children[i].t1));
+  }
+  constexpr int kSamples = 16;
+  for (int i = 0; i <= kSamples; ++i) {
+    const Vec2 p(w.b0 + (w.b1 - w.b0) * i / kSamples, 0.0);
+    const Exit x = exitOf(s, p, v0, v1, v2);
+    if (x.edge == 0) continue;  // ray along e0's line: nothing enters
+    bool covered = false;
+    for (int k = 0; k < r.numChildren && !covered; ++k) {
+      const LocalChild& ch = r.children[k];
+      covered = ch.edge == x.edge && x.t >= ch.t0 - 1e-12 && x.t <= ch.t1 + 1e-12;
+    }
+    for (const Vec2& y : childEnds)
+      if (!covered && sinAngle(x.point - s, y - s) <= kappa) covered = true;
+    if (!covered) {
+      std::ostringstream os;
+      os << std::setprecision(17) << "the ray from s through x = " << p.x() << " leaves the face on e"
+         << x.edge << " at t = " << x.t << ", outside every child" << where;
+      return fail(v, "coverage", os.str());
+    }
+  }
+  for (int i = 0; i < r.numChildren; ++i) {
+    const LocalChild& ch = r.children[i];
+    for (double t : {ch.t0, 0.5 * (ch.t0 + ch.t1), ch.t1}) {
+      const Vec2 y = childPoint(w, ch.edge, t);
+      const Vec2 d = y - s;
+      const double xStar = d.y() > 0.0 ? s.x() + d.x() * (-s.y()) / d.y() : y.x();
+      const double slack = 1e-12 * scale;
+      if (xStar >= w.b0 - slack && xStar <= w.b1 + slack) continue;
+      if (sinAngle(d, b0 - s) <= kappa || sinAngle(d, b1 - s) <= kappa) continue;
+      std::ostringstream os;
+      os << std::setprecision(17) << "the point t = " << t << " of the e" << int(ch.edge)
+         << " child is seen from s through x = " << xStar << ", outside the window" << where;
+      return fail(v, "soundness", os.str());
+    }
+  }
+  return v;
+}
+
+// ===  fuzz_edge_update ==========================================================================
+
+namespace {
+
+bool sameFunction(const Interval& a, const Interval& b) {
+  return a.source == b.source && a.sigma == b.sigma && a.side == b.side && a.origin == b.origin;
+}
+
+}  // namespace
+
+Verdict checkEdgeUpdate(const EdgeUpdateCase& c) {
+  Verdict v;
+  v.interesting = true;
+  EdgeIntervals list;
+  list.assign(c.before);
+  IntervalIdSource ids{static_cast<std::uint32_t>(c.before.size() + 2)};
+  EdgeUpdateReport report;
+  std::vector<Interval> scratch;
+  auto caseText = [&] {
+    std::ostringstream os;
+    os << std::setprecision(17) << "\n  edge length " << c.edgeLength;
+    for (const Interval& w : c.before) os << "\n  before   " << describeInterval(w);
+    os << "\n  incoming " << describeInterval(c.incoming);
+    for (const Interval& w : list.intervals()) os << "\n  after    " << describeInterval(w);
+    return os.str();
+  };
+  try {
+    list.insert(c.incoming, c.edgeLength, ids, report, scratch);
+  } catch (const InternalError& e) {
+    return fail(v, "internal-check", e.what() + caseText());
+  } catch (const std::exception& e) {
+    return fail(v, "unexpected-exception", e.what() + caseText());
+  }
+  v.degeneracies += report.degeneracies;
+  {
+    std::ostringstream os;
+    os << c.before.size() << " → " << list.intervals().size() << " intervals;";
+    for (std::size_t k = static_cast<std::size_t>(DegeneracyKind::D1); k < kNumDegeneracyKinds; ++k)
+      if (report.degeneracies.count[k] != 0)
+        os << " " << name(static_cast<DegeneracyKind>(k)) << "×" << report.degeneracies.count[k];
+    v.summary = os.str();
+  }
+  const auto after = list.intervals();
+  // Step 6: the cheap invariants and the pointwise minimum (the full tier), as the checker runs
+  // them inside the solver.
+  try {
+    InvariantChecker checker(CheckLevel::Full, true);
+    checker.onEdgeUpdate({0, c.edgeLength, c.before, c.incoming, after, report, nullptr});
+  } catch (const InvariantViolation& e) {
+    return fail(v, e.invariant(), e.what() + caseText());
+  }
+  // No pseudo-source invented: every interval after is a piece of one of the functions before.
+  for (const Interval& w : after) {
+    bool known = sameFunction(w, c.incoming);
+    for (const Interval& b : c.before) known = known || sameFunction(w, b);
+    if (!known) return fail(v, "invented-source", "interval " + describeInterval(w) + " has a source no input had" + caseText());
+  }
+  for (std::size_t i = 0; i < after.size(); ++i)
+    for (std::size_t j = i + 1; j < after.size(); ++j)
+      if (after[i].id == after[j].id) return fail(v, "ids", "two intervals share id " + std::to_string(after[i].id) + caseText());
+  for (std::uint32_t id : report.toQueue)
+    if (!list.find(id)) return fail(v, "ids", "id " + std::to_string(id) + " to queue is not in the list" + caseText());
+  return v;
+}
+
+// ===  The unfolding check (fuzz_propagation, fuzz_solver) =======================================
+
+namespace {
+
+struct UnfoldingFailure : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+/// Checks every interval a propagation case creates against an independent 3-D construction: the
+/// parent's pseudo-source placed in the crossed face's plane (mirrored across the parent's edge,
+/// away from the face's third vertex) and the child edge's points from the mesh positions. The
+/// child's σ + |x − s| must equal σ + that 3-D distance. Forwards every event to `next`.
+class UnfoldingChecker : public SolverObserver {
+ public:
+  UnfoldingChecker(const Mesh& mesh, SolverObserver* next) : mesh_(mesh), next_(next) {}
+  std::uint64_t checked = 0;
+
+  void onPropagation(const PropagationEvent& e) override {
+    face_ = e.face;
+    edge_ = e.edge;
+    window_ = e.window;
+    if (next_) next_->onPropagation(e);
+  }
+  void onEdgeUpdate(const EdgeUpdateEvent& e) override {
+    if (next_) next_->onEdgeUpdate(e);
+    if (e.branch != nullptr) checkChild(e);
+  }
+  void onFinish(const GeodesicSolver& s) override {
+    if (next_) next_->onFinish(s);
+  }
+
+ private:
+  void checkChild(const EdgeUpdateEvent& e) {
+    const Edge& E = mesh_.edge(edge_);
+    const Edge& C = mesh_.edge(e.edge);
+    const Interval& child = e.incoming;
+    std::ostringstream why;
+    why << std::setprecision(17) << "window " << describeInterval(window_) << " on edge " << edge_
+        << " (" << E.vertex[0] << "-" << E.vertex[1] << ") crossing face " << face_ << " made "
+        << describeInterval(child) << " on edge " << e.edge << " (" << C.vertex[0] << "-"
+        << C.vertex[1] << ") by branch " << name(*e.branch) << ": ";
+    if (mesh_.localEdgeIndex(face_, e.edge) < 0 || e.edge == edge_)
+      throw UnfoldingFailure(why.str() + "the child is not on another edge of the crossed face");
+    if (child.side != mesh_.sideOf(e.edge, face_))
+      throw UnfoldingFailure(why.str() + "the child's source is not on the crossed face's side");
+    if (child.sigma != window_.sigma || child.origin != window_.origin)
+      throw UnfoldingFailure(why.str() + "the child's sigma or origin differs from its parent's");
+    const Vec3 o = mesh_.position(E.vertex[0]);
+    const Vec3 dir = (mesh_.position(E.vertex[1]) - o).normalized();
+    Index apex = kNoIndex;
+    for (Index x : mesh_.face(face_))
+      if (x != E.vertex[0] && x != E.vertex[1]) apex = x;
+    const Vec3 rel = mesh_.position(apex) - o;
+    const Vec3 perp = rel - rel.dot(dir) * dir;
+    const double h = perp.norm();
+    const double scale = std::max(rel.norm(), E.length);
+    if (!(h > 1e-9 * scale)) return;  // zero-area or needle face: no reliable in-plane normal
+    const Vec3 n = perp / h;
+    const Vec3 s3 = o + window_.source.x() * dir - window_.source.y() * n;
+    const Vec3 co = mesh_.position(C.vertex[0]);
+    const Vec3 cdir = (mesh_.position(C.vertex[1]) - co).normalized();
+    // The normal's rounding grows as the face gets thinner, and moves s3 by that × |s|.
+    const double amplification = 1e-14 * window_.source.norm() * (rel.norm() / h);
+    for (double x : {child.b0, 0.5 * (child.b0 + child.b1), child.b1}) {
+      const double truth = (co + x * cdir - s3).norm();
+      const double claim = std::hypot(x - child.source.x(), child.source.y());
+      const double tolerance = 1e-11 * (truth + C.length + E.length) + amplification;
+      ++checked;
+      if (!(std::abs(claim - truth) <= tolerance)) {
+        why << "at x = " << x << " the child gives sigma + " << claim
+            << " but the unfolded parent source is " << truth << " away";
+        throw UnfoldingFailure(why.str());
+      }
+    }
+  }
+
+  const Mesh& mesh_;
+  SolverObserver* next_;
+  Index face_ = kNoIndex, edge_ = kNoIndex;
+  Interval window_;
+};
+
+/// Runs a solve with the observers, turning what they throw into a verdict. False if it failed.
+bool solveChecked(GeodesicSolver& solver, std::span<const SurfacePoint> sources,
+                  const SolveOptions& options, Verdict& v) {
+  try {
+    solver.solve(sources, options);
+    return true;
+  } catch (const InvariantViolation& e) {
+    std::ostringstream os;
+    os << e.what() << "\n  edge " << e.edge << " length " << fmt(e.edgeLength) << " branch " << e.branch;
+    for (const Interval& w : e.before) os << "\n  before   " << describeInterval(w);
+    os << "\n  incoming " << describeInterval(e.incoming);
+    for (const Interval& w : e.after) os << "\n  after    " << describeInterval(w);
+    fail(v, e.invariant(), os.str());
+  } catch (const UnfoldingFailure& e) {
+    fail(v, "unfolding", e.what());
+  } catch (const InternalError& e) {
+    fail(v, "internal-check", e.what());
+  } catch (const std::exception& e) {
+    fail(v, "unexpected-exception", e.what());
+  }
+  return false;
+}
+
+std::optional<Mesh> buildMesh(const TriangleSoup& soup, Verdict& v) {
+  try {
+    return Mesh(soup);
+  } catch (const std::exception& e) {
+    fail(v, "validated-mesh-refused", std::string("validateMesh found no error but Mesh threw: ") + e.what());
+    return std::nullopt;
+  }
+}
+
+std::string describeSoup(const TriangleSoup& soup) {
+  std::ostringstream os;
+  os << std::setprecision(17) << "OFF\n" << soup.positions.size() << " " << soup.faces.size() << " 0\n";
+  for (const Vec3& p : soup.positions) os << p.x() << " " << p.y() << " " << p.z() << "\n";
+  for (const auto& f : soup.faces) os << "3 " << f[0] << " " << f[1] << " " << f[2] << "\n";
+  return os.str();
+}
+
+// ===  fuzz_propagation: the exact two-face distance =============================================
+
+/// Bit f set when the point lies in face f (by the elements it names, not by its position).
+unsigned facesOf(const TriangleSoup& soup, const SurfacePoint& p) {
+  unsigned mask = 0;
+  for (std::size_t f = 0; f < soup.faces.size(); ++f) {
+    const auto& F = soup.faces[f];
+    auto has = [&](Index v) { return F[0] == v || F[1] == v || F[2] == v; };
+    bool in = false;
+    switch (p.kind) {
+      case SurfacePoint::Kind::Vertex: in = has(p.vertex); break;
+      case SurfacePoint::Kind::Edge: in = has(p.vertex) && has(p.toVertex); break;
+      case SurfacePoint::Kind::Face: in = p.face == f; break;
+    }
+    if (in) mask |= 1u << f;
+  }
+  return mask;
+}
+
+/// min over c on segment ab of |s − c| + |c − q|: convex in the segment parameter, minimised by
+/// golden-section search (to rounding) and compared with both ends.
+double viaSegment(const Vec3& s, const Vec3& q, const Vec3& a, const Vec3& b) {
+  auto f = [&](double u) {
+    const Vec3 c = a + u * (b - a);
+    return (s - c).norm() + (c - q).norm();
+  };
+  const double g = 0.5 * (std::sqrt(5.0) - 1.0);
+  double lo = 0.0, hi = 1.0;
+  double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);
+  double f1 = f(x1), f2 = f(x2);
+  for (int it = 0; it < 200 && hi - lo > 1e-17; ++it) {
+    if (f1 <= f2) {
+      hi = x2, x2 = x1, f2 = f1, x1 = hi - g * (hi - lo), f1 = f(x1);
+    } else {
+      lo = x1, x1 = x2, f1 = f2, x2 = lo + g * (hi - lo), f2 = f(x2);
+    }
+  }
+  return std::min({f(0.0), f(1.0), f1, f2, f(0.5 * (lo + hi))});
+}
+
+}  // namespace
+
+Verdict checkPropagation(const PropagationCase& c, CheckDepth) {
+  Verdict v;
+  v.interesting = true;
+  auto mesh = buildMesh(c.soup, v);
+  if (!mesh) return v;
+  GeodesicSolver solver(*mesh);
+  InvariantChecker invariants(CheckLevel::Full, true);
+  UnfoldingChecker unfolding(*mesh, &invariants);
+  solver.setObserver(&unfolding);
+  const std::vector<SurfacePoint> sources{c.source};
+  const std::string where = "\nmesh:\n" + describeSoup(c.soup) + "source " + formatSurfacePoint(c.source);
+  if (!solveChecked(solver, sources, {}, v)) {
+    v.message += where;
+    return v;
+  }
+  v.degeneracies = solver.counters();
+  v.summary = std::to_string(solver.counters().cases) + " propagation cases, " +
+              std::to_string(unfolding.checked) + " unfolded distances checked";
+
+  const TriangleSoup& soup = c.soup;
+  const Vec3 S = surfacePointPosition(soup, c.source);
+  const unsigned sourceFaces = facesOf(soup, c.source);
+  const Vec3 a = soup.positions[0], b = soup.positions[1];  // the shared edge v0 v2
+  const double diag = mesh->boundingBoxDiagonal();
+  std::vector<SurfacePoint> queries;
+  for (Index x = 0; x < 4; ++x) queries.push_back(SurfacePoint::atVertex(x));
+  for (const auto& F : soup.faces) {
+    for (int k = 0; k < 3; ++k)
+      for (double t : {0.25, 0.5, 0.75}) queries.push_back(SurfacePoint::onEdge(F[k], F[(k + 1) % 3], t));
+  }
+  queries.push_back(SurfacePoint::inFace(0, 1.0 / 3, 1.0 / 3, 1.0 / 3));
+  queries.push_back(SurfacePoint::inFace(1, 1.0 / 3, 1.0 / 3, 1.0 / 3));
+  queries.push_back(SurfacePoint::inFace(0, 0.6, 0.3, 0.1));
+  queries.push_back(SurfacePoint::inFace(1, 0.1, 0.3, 0.6));
+  for (const SurfacePoint& q : queries) {
+    const Vec3 Q = surfacePointPosition(soup, q);
+    const double truth = (facesOf(soup, q) & sourceFaces) != 0 ? (S - Q).norm() : viaSegment(S, Q, a, b);
+    double got;
+    try {
+      got = q.kind == SurfacePoint::Kind::Vertex ? solver.vertexDistances()[q.vertex] : solver.distance(q);
+    } catch (const std::exception& e) {
+      return fail(v, "unexpected-exception", std::string("query ") + formatSurfacePoint(q) + ": " + e.what() + where);
+    }
+    if (!(std::abs(got - truth) <= 1e-9 * diag + 1e-12 * truth)) {
+      return fail(v, "two-face-distance", "at " + formatSurfacePoint(q) + " the solver gives " + fmt(got) +
+                                              ", the exact two-face distance is " + fmt(truth) + where);
+    }
+  }
+  return v;
+}
+
+// ===  fuzz_solver ===============================================================================
+
+namespace {
+
+/// Forwards to the checker for planar oracles: the distances in a planar domain, or nullopt when
+/// the mesh is not one the oracle can describe (pinched boundary, several components).
+std::optional<std::vector<double>> planarReference(const Mesh& mesh, const std::vector<Vec3>& sources) {
+  const TriangleSoup& soup = mesh.soup();
+  if (mesh.numComponents() != 1) return std::nullopt;
+  try {
+    PlanarDomain domain(planarBoundaryPolygons(soup));
+    std::vector<Vec2> queries;
+    std::vector<Index> which;
+    for (Index x = 0; x < mesh.numVertices(); ++x) {
+      if (!mesh.isReferenced(x)) continue;
+      queries.emplace_back(soup.positions[x].x(), soup.positions[x].y());
+      which.push_back(x);
+    }
+    std::vector<double> ref(mesh.numVertices(), INFINITY);
+    for (const Vec3& s : sources) {
+      const auto d = domain.distances(Vec2(s.x(), s.y()), queries);
+      for (std::size_t i = 0; i < which.size(); ++i) ref[which[i]] = std::min(ref[which[i]], d[i]);
+    }
+    return ref;
+  } catch (const std::invalid_argument&) {
+    return std::nullopt;
+  }
+}
+
+}  // namespace
+
+Verdict checkSolver(const SolverCase& c, CheckDepth depth) {
+  Verdict v;
+  v.interesting = true;
+  auto meshOpt = buildMesh(c.soup, v);
+  if (!meshOpt) return v;
+  const Mesh& mesh = *meshOpt;
+  const TriangleSoup& soup = mesh.soup();
+  std::string where = "\nmesh:\n" + describeSoup(soup);
+  for (const SurfacePoint& s : c.sources) where += "source " + formatSurfacePoint(s) + "\n";
+
+  GeodesicSolver solver(mesh);
+  InvariantChecker invariants(depth == CheckDepth::Full ? CheckLevel::Full : CheckLevel::Cheap, true);
+  UnfoldingChecker unfolding(mesh, &invariants);
+  solver.setObserver(&unfolding);
+  if (!solveChecked(solver, c.sources, {}, v)) return v.message += where, v;
+  v.degeneracies = solver.counters();
+  const std::vector<double> d(solver.vertexDistances().begin(), solver.vertexDistances().end());
+  {
+    std::ostringstream os;
+    os << mesh.numFaces() << " faces, " << c.sources.size() << " source(s), "
+       << solver.counters().cases << " propagation cases, " << solver.stats().intervalsAtEnd
+       << " intervals at the end";
+    v.summary = os.str();
+  }
+  const double diag = mesh.boundingBoxDiagonal();
+  constexpr double kRel = 1e-9;  // DESIGN.md's accuracy target, × the distances or diagonal
+
+  for (Index x = 0; x < d.size(); ++x) {
+    if (std::isnan(d[x]) || d[x] < 0.0)
+      return fail(v, "distance-values", "vertex " + std::to_string(x) + " has distance " + fmt(d[x]) + where);
+  }
+  std::vector<Vec3> sourcePositions;
+  for (const SurfacePoint& s : c.sources) sourcePositions.push_back(surfacePointPosition(soup, s));
+  const std::vector<double> euclid = euclideanDistances(soup.positions, sourcePositions);
+  auto report = [&](const char* check, const CheckReport& r) {
+    if (!r.ok()) fail(v, check, r.summary() + where);
+    return r.ok();
+  };
+  if (!report("euclidean-lower-bound", checkEuclideanLowerBound(d, euclid, kRel))) return v;
+  if (!report("upper-bound", checkUpperBound(d, edgeGraphDijkstra(mesh, c.sources), kRel))) return v;
+  if (!report("lipschitz", checkLipschitz(mesh, d, kRel))) return v;
+  if (c.rectangle) {
+    if (!report("planar-agreement", checkAgreement(d, euclid, kRel))) return v;
+  } else if (c.planar) {
+    if (const auto ref = planarReference(mesh, sourcePositions))
+      if (!report("planar-agreement", checkAgreement(d, *ref, kRel))) return v;
+  }
+
+  // Queries at edge midpoints lie within what their edge's ends allow.
+  for (Index e = 0; e < mesh.numEdges(); ++e) {
+    const Edge& E = mesh.edge(e);
+    const double du = d[E.vertex[0]], dv = d[E.vertex[1]];
+    const double got = solver.distance(SurfacePoint::onEdge(E.vertex[0], E.vertex[1], 0.5));
+    const Vec3 mid = 0.5 * (soup.positions[E.vertex[0]] + soup.positions[E.vertex[1]]);
+    if (!std::isfinite(du)) {
+      if (std::isfinite(got))
+        return fail(v, "edge-query", "edge " + std::to_string(e) + " has unreachable ends but its midpoint is at " + fmt(got) + where);
+      continue;
+    }
+    double lower = std::max(du, dv) - 0.5 * E.length;
+    double nearest = INFINITY;
+    for (const Vec3& s : sourcePositions) nearest = std::min(nearest, (s - mid).norm());
+    lower = std::max(lower, nearest);
+    const double upper = std::min(du, dv) + 0.5 * E.length;
+    const double slack = kRel * (upper + diag);
+    if (!(got >= lower - slack && got <= upper + slack)) {
+      std::ostringstream os;
+      os << std::setprecision(17) << "the midpoint of edge " << e << " (" << E.vertex[0] << "-"
+         << E.vertex[1] << ", ends at " << du << " and " << dv << ", length " << E.length
+         << ") is at " << got << ", outside [" << lower << ", " << upper << "]";
+      return fail(v, "edge-query", os.str() + where);
+    }
+  }
+
+  // A traced path ends at a source and is as long as the distance.
+  Index farthest = kNoIndex;
+  for (Index x = 0; x < d.size(); ++x)
+    if (std::isfinite(d[x]) && (farthest == kNoIndex || d[x] > d[farthest])) farthest = x;
+  if (farthest != kNoIndex && d[farthest] > 0.0) {
+    try {
+      const GeodesicPath p = solver.path(SurfacePoint::atVertex(farthest));
+      double sum = 0.0;
+      for (std::size_t i = 0; i + 1 < p.points.size(); ++i) sum += (p.points[i + 1].position - p.points[i].position).norm();
+      double toSource = INFINITY;
+      if (!p.points.empty())
+        for (const Vec3& s : sourcePositions) toSource = std::min(toSource, (p.points.back().position - s).norm());
+      const double tolerance = kRel * (d[farthest] + diag);
+      if (p.points.empty() || !(std::abs(p.length - d[farthest]) <= tolerance) ||
+          !(std::abs(sum - p.length) <= tolerance) || !(toSource <= tolerance)) {
+        std::ostringstream os;
+        os << std::setprecision(17) << "the path from vertex " << farthest << " (distance " << d[farthest]
+           << ") has length " << p.length << ", " << p.points.size() << " points summing to " << sum
+           << ", ending " << toSource << " from the nearest source";
+        return fail(v, "path-length", os.str() + where);
+      }
+    } catch (const std::exception& e) {
+      return fail(v, "unexpected-exception", std::string("path: ") + e.what() + where);
+    }
+  }
+
+  // A stop distance keeps every distance within it and drops every one beyond.
+  if (c.stopDistance) {
+    GeodesicSolver stopped(mesh);
+    SolveOptions options;
+    options.stopDistance = *c.stopDistance;
+    if (!solveChecked(stopped, c.sources, options, v)) return v.message += where, v;
+    const auto ds = stopped.vertexDistances();
+    const double stop = *c.stopDistance;
+    for (Index x = 0; x < d.size(); ++x) {
+      const bool within = d[x] <= stop * (1.0 - 1e-12);
+      const bool beyond = d[x] > stop * (1.0 + 1e-12) + 1e-300;
+      if ((within && !(std::abs(ds[x] - d[x]) <= 1e-12 * d[x])) || (beyond && ds[x] != INFINITY)) {
+        return fail(v, "stop-distance", "vertex " + std::to_string(x) + " at " + fmt(d[x]) + " gets " +
+                                            fmt(ds[x]) + " with stop distance " + fmt(stop) + where);
+      }
+    }
+  }
+
+  // d(a, b) = d(b, a) for a single vertex source a and the farthest vertex b.
+  if (c.checkSymmetry && c.sources.size() == 1 && c.sources[0].kind == SurfacePoint::Kind::Vertex &&
+      farthest != kNoIndex && farthest != c.sources[0].vertex) {
+    GeodesicSolver back(mesh);
+    const std::vector<SurfacePoint> from{SurfacePoint::atVertex(farthest)};
+    if (!solveChecked(back, from, {}, v)) return v.message += where, v;
+    if (!report("symmetry", checkSymmetry(d[farthest], back.vertexDistances()[c.sources[0].vertex], kRel))) return v;
+  }
+  return v;
+}
+
+// ===  fuzz_mesh_io ==============================================================================
+
+Verdict checkMeshIo(const MeshIoCase& c) {
+  Verdict v;
+  v.interesting = true;
+  MeshReadResult result;
+  try {
+    result = readMeshFromMemory(c.bytes, "fuzz-input", c.formatHint);
+  } catch (const InputError& e) {
+    v.summary = "rejected (" + e.kind() + "): " + e.what();
+    return v;
+  } catch (const std::exception& e) {
+    return fail(v, "unexpected-exception", std::string("the reader threw a non-InputError: ") + e.what());
+  }
+  const TriangleSoup& soup = result.soup;
+  if (soup.faces.empty() || (!soup.faceLines.empty() && soup.faceLines.size() != soup.faces.size()) ||
+      (!soup.vertexLines.empty() && soup.vertexLines.size() != soup.positions.size()))
+    return fail(v, "soup-shape", "the reader returned no faces or line lists of the wrong length");
+  std::vector<MeshIssue> issues = result.issues;
+  try {
+    validateMesh(soup, issues);
+  } catch (const std::exception& e) {
+    return fail(v, "unexpected-exception", std::string("validateMesh threw: ") + e.what());
+  }
+  bool errors = false;
+  for (const MeshIssue& i : issues) errors = errors || i.severity == Severity::Error;
+  v.summary = std::to_string(soup.positions.size()) + " vertices, " + std::to_string(soup.faces.size()) +
+              " faces, " + std::to_string(issues.size()) + " issue(s)" + (errors ? " incl. errors" : "");
+  if (errors) {
+    try {
+      Mesh m(soup);  // may refuse, with InputError only
+    } catch (const InputError&) {
+    } catch (const std::exception& e) {
+      return fail(v, "unexpected-exception", std::string("Mesh threw a non-InputError: ") + e.what());
+    }
+    return v;
+  }
+  std::optional<Mesh> mesh;
+  try {
+    mesh.emplace(soup);
+  } catch (const std::exception& e) {
+    return fail(v, "validated-mesh-refused", std::string("validateMesh found no error but Mesh threw: ") + e.what());
+  }
+  for (Index f = 0; f < mesh->numFaces(); ++f) {
+    double sum = 0.0;
+    for (int k = 0; k < 3; ++k) {
+      const double a = mesh->cornerAngle(f, k);
+      if (!(a >= 0.0 && a <= std::numbers::pi)) return fail(v, "mesh-geometry", "face " + std::to_string(f) + " has corner angle " + fmt(a));
+      sum += a;
+    }
+    if (!(std::abs(sum - std::numbers::pi) <= 1e-9)) return fail(v, "mesh-geometry", "face " + std::to_string(f) + "'s corner angles sum to " + fmt(sum));
+  }
+  for (Index e = 0; e < mesh->numEdges(); ++e) {
+    if (!(mesh->edge(e).length > 0.0)) return fail(v, "mesh-geometry", "edge " + std::to_string(e) + " has length " + fmt(mesh->edge(e).length));
+  }
+  // Round trip: written as OFF with 17 digits and read back, the soup is the same.
+  std::ostringstream off;
+  off << std::setprecision(17) << "OFF\n" << soup.positions.size() << " " << soup.faces.size() << " 0\n";
+  for (const Vec3& p : soup.positions) off << p.x() << " " << p.y() << " " << p.z() << "\n";
+  for (const auto& f : soup.faces) off << "3 " << f[0] << " " << f[1] << " " << f[2] << "\n";
+  try {
+    const MeshReadResult again = readMeshFromMemory(off.str(), "round-trip.off", "off");
+    bool same = again.soup.faces == soup.faces && again.soup.positions.size() == soup.positions.size();
+    for (std::size_t i = 0; same && i < soup.positions.size(); ++i)
+      same = std::memcmp(again.soup.positions[i].data(), soup.positions[i].data(), 3 * sizeof(double)) == 0;
+    if (!same) return fail(v, "round-trip", "the soup written as OFF reads back differently:\n" + off.str());
+  } catch (const std::exception& e) {
+    return fail(v, "round-trip", std::string("the soup written as OFF does not read back: ") + e.what() + "\n" + off.str());
+  }
+  return v;
+}
+
+// ===  Dispatch ==================================================================================
+
+Verdict check(const FuzzCase& c, CheckDepth depth) {
+  return std::visit(
+      [&](const auto& x) -> Verdict {
+        using T = std::decay_t<decltype(x)>;
+        if constexpr (std::is_same_v<T, MeshIoCase>) return checkMeshIo(x);
+        else if constexpr (std::is_same_v<T, PredicateCase>) return checkPredicates(x);
+        else if constexpr (std::is_same_v<T, EdgeUpdateCase>) return checkEdgeUpdate(x);
+        else if constexpr (std::is_same_v<T, PropagationCase>) return checkPropagation(x, depth);
+        else return checkSolver(x, depth);
+      },
+      c);
+}
+
+Verdict replay(FuzzTarget t, std::span<const std::uint8_t> bytes, CheckDepth depth) {
+  const auto c = decode(t, bytes);
+  if (!c) {
+    Verdict v;
+    v.summary = "skipped: the target does not test these bytes";
+    return v;
+  }
+  return check(*c, depth);
+}
+
+// ===  Reproducers: files and targets ============================================================
+
+std::vector<std::uint8_t> readFileBytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError("io", path + ": cannot open");
+  std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (in.bad()) throw InputError("io", path + ": read error");
+  return bytes;
+}
+
+namespace {
+
+/// The first non-blank, non-comment token of a text file, or "" for binary content.
+std::string firstToken(std::span<const std::uint8_t> bytes) {
+  const std::size_t n = std::min<std::size_t>(bytes.size(), 512);
+  for (std::size_t i = 0; i < n; ++i) {
+    const unsigned char ch = bytes[i];
+    if (ch < 9 || (ch > 13 && ch < 32) || ch > 126) return "";
+  }
+  std::string text(reinterpret_cast<const char*>(bytes.data()), n);
+  std::istringstream in(text);
+  std::string line;
+  while (std::getline(in, line)) {
+    std::istringstream ls(line);
+    std::string token;
+    if (!(ls >> token) || token[0] == '#') continue;
+    return token;
+  }
+  return "";
+}
+
+}  // namespace
+
+std::optional<FuzzTarget> detectTarget(const std::string& path, std::span<const std::uint8_t> bytes) {
+  // A directory named after a target, nearest first.
+  std::vector<std::string> parts;
+  std::string part;
+  for (char ch : path) {
+    if (ch == '/' || ch == '\\') {
+      if (!part.empty()) parts.push_back(part);
+      part.clear();
+    } else {
+      part += ch;
+    }
+  }
+  for (auto it = parts.rbegin(); it != parts.rend(); ++it)
+    for (FuzzTarget t : kFuzzTargets)
+      if (*it == name(t)) return t;
+  if (isEdgeUpdateReproducer(bytes)) return FuzzTarget::EdgeUpdate;
+  const std::string token = firstToken(bytes);
+  if (token == "ply" || token == "v" || token == "f" || token == "o" || token == "g" ||
+      (token.size() >= 3 && token.compare(token.size() - 3, 3, "OFF") == 0))
+    return FuzzTarget::MeshIo;
+  for (const char* ext : {".off", ".obj", ".ply", ".OFF", ".OBJ", ".PLY"})
+    if (path.size() > 4 && path.compare(path.size() - 4, 4, ext) == 0) return FuzzTarget::MeshIo;
+  return std::nullopt;
+}
+
+// ===  describe ==================================================================================
+
+namespace {
+
+void describeCounters(const DegeneracyCounters& c, std::ostream& out) {
+  bool any = false;
+  for (std::size_t k = 0; k < kNumDegeneracyKinds; ++k) {
+    if (c.count[k] == 0) continue;
+    out << (any ? " " : "") << name(static_cast<DegeneracyKind>(k)) << "×" << c.count[k];
+    any = true;
+  }
+  if (!any) out << "none";
+}
+
+}  // namespace
+
+void describe(FuzzTarget t, std::span<const std::uint8_t> bytes, std::ostream& out) {
+  out << std::setprecision(17);
+  const auto decoded = decode(t, bytes);
+  if (!decoded) {
+    out << "# " << name(t) << ": " << bytes.size() << " bytes the target skips (too long, or a "
+        << "degenerate range, a mesh the validator refuses, an invalid old list)\n";
+    if (t == FuzzTarget::EdgeUpdate && isEdgeUpdateReproducer(bytes)) {
+      try {
+        parseEdgeUpdateReproducer(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
+      } catch (const InputError& e) {
+        out << "# not a valid reproducer: " << e.what() << "\n";
+      }
+    }
+    return;
+  }
+  if (const auto* c = std::get_if<MeshIoCase>(&*decoded)) {
+    out << "# fuzz_mesh_io: " << c->bytes.size() << " bytes, format "
+        << (c->formatHint.empty() ? "detected from the content" : c->formatHint) << "\n";
+    int lines = 0;
+    std::string line;
+    for (std::size_t i = 0; i <= c->bytes.size() && lines < 40; ++i) {
+      if (i == c->bytes.size() || c->bytes[i] == '\n') {
+        out << "| " << line << "\n";
+        line.clear();
+        ++lines;
+        continue;
+      }
+      const unsigned char ch = c->bytes[i];
+      if (ch >= 32 && ch < 127) {
+        line += static_cast<char>(ch);
+      } else {
+        char buf[8];
+        std::snprintf(buf, sizeof buf, "\\x%02x", ch);
+        line += buf;
+      }
+    }
+    if (lines == 40) out << "| ...\n";
+  } else if (const auto* c = std::get_if<PredicateCase>(&*decoded)) {
+    const LocalWindow& w = c->window;
+    out << "# fuzz_predicates: a window on e0 = v0v2 propagated across the face v0 v1 v2 (Fig. 3 frame)\n"
+        << "edge-length " << w.edgeLength << "\n"
+        << "apex " << w.apex.x() << " " << w.apex.y() << "\n"
+        << "window " << w.b0 << " " << w.b1 << "\n"
+        << "source " << w.source.x() << " " << w.source.y() << "\n"
+        << "# local scale " << localScale(w) << "; v0 = (0, 0), v2 = (" << w.edgeLength << ", 0)\n";
+    const LocalPropagation r = propagateLocal(w);
+    out << "# propagateLocal: " << describeResult(r) << "\n";
+    const ExactFig6 e = exactFig6(w);
+    out << "# exact tree: " << (e.branch ? std::string(name(*e.branch)) : "undecided, near " + e.nearWhat) << "\n";
+  } else if (const auto* c = std::get_if<EdgeUpdateCase>(&*decoded)) {
+    out << "# fuzz_edge_update: Algorithm 2 merges the incoming interval into the edge's list\n";
+    if (!c->note.empty()) out << "# " << c->note << "\n";
+    out << "edge-length " << c->edgeLength << "\n";
+    for (const Interval& w : c->before) out << "before   " << describeInterval(w) << "\n";
+    out << "incoming " << describeInterval(c->incoming) << "\n";
+  } else if (const auto* c = std::get_if<PropagationCase>(&*decoded)) {
+    out << "# fuzz_propagation: faces B (0) and A (1) share the edge 0-1\n"
+        << describeSoup(c->soup) << "source " << formatSurfacePoint(c->source) << "\n";
+  } else if (const auto* c = std::get_if<SolverCase>(&*decoded)) {
+    out << "# fuzz_solver: " << c->soup.faces.size() << " faces"
+        << (c->rectangle ? ", planar rectangle" : c->planar ? ", planar" : "") << "\n"
+        << describeSoup(c->soup);
+    for (const SurfacePoint& s : c->sources) out << "source " << formatSurfacePoint(s) << "\n";
+    if (c->stopDistance) out << "stop-distance " << *c->stopDistance << "\n";
+    if (c->checkSymmetry) out << "check-symmetry\n";
+  }
+}
+
+// ===  SVG =======================================================================================
+
+namespace {
+
+constexpr const char* kPalette[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd",
+                                    "#8c564b", "#e377c2", "#17becf", "#bcbd22", "#7f7f7f"};
+
+/// A rectangle of the picture showing a world rectangle, y up; uniform keeps the aspect ratio.
+struct Panel {
+  double px, py, pw, ph;
+  double minX = 0, minY = 0, sx = 1, sy = 1, ox = 0, oy = 0;
+  Panel(double x, double y, double w, double h, double x0, double y0, double x1, double y1, bool uniform)
+      : px(x), py(y), pw(w), ph(h) {
+    if (!(x1 > x0)) x0 -= 0.5, x1 += 0.5;
+    if (!(y1 > y0)) y0 -= 0.5, y1 += 0.5;
+    const double mx = 0.06 * (x1 - x0), my = 0.08 * (y1 - y0);
+    x0 -= mx, x1 += mx, y0 -= my, y1 += my;
+    minX = x0, minY = y0;
+    sx = pw / (x1 - x0), sy = ph / (y1 - y0);
+    if (uniform) {
+      const double k = std::min(sx, sy);
+      ox = 0.5 * (pw - k * (x1 - x0));
+      oy = 0.5 * (ph - k * (y1 - y0));
+      sx = sy = k;
+    }
+  }
+  Vec2 map(const Vec2& p) const { return {px + ox + (p.x() - minX) * sx, py + ph - oy - (p.y() - minY) * sy}; }
+};
+
+class SvgDoc {
+ public:
+  SvgDoc(double w, double h) : w_(w), h_(h) { body_ << std::setprecision(6); }
+  void line(const Panel& P, const Vec2& a, const Vec2& b, const std::string& color, double width, bool dashed = false) {
+    const Vec2 A = P.map(a), B = P.map(b);
+    body_ << "<line x1='" << A.x() << "' y1='" << A.y() << "' x2='" << B.x() << "' y2='" << B.y()
+          << "' stroke='" << color << "' stroke-width='" << width << "'"
+          << (dashed ? " stroke-dasharray='6,4'" : "") << " stroke-linecap='round'/>\n";
+  }
+  void polyline(const Panel& P, const std::vector<Vec2>& pts, const std::string& color, double width, bool dashed = false) {
+    body_ << "<polyline fill='none' stroke='" << color << "' stroke-width='" << width << "'"
+          << (dashed ? " stroke-dasharray='6,4'" : "") << " points='";
+    for (const Vec2& p : pts) {
+      const Vec2 q = P.map(p);
+      body_ << q.x() << "," << q.y() << " ";
+    }
+    body_ << "'/>\n";
+  }
+  void polygon(const Panel& P, const std::vector<Vec2>& pts, const std::string& fill, const std::string& stroke) {
+    body_ << "<polygon fill='" << fill << "' stroke='" << stroke << "' stroke-width='1' points='";
+    for (const Vec2& p : pts) {
+      const Vec2 q = P.map(p);
+      body_ << q.x() << "," << q.y() << " ";
+    }
+    body_ << "'/>\n";
+  }
+  void dot(const Panel& P, const Vec2& p, double r, const std::string& color) {
+    const Vec2 q = P.map(p);
+    body_ << "<circle cx='" << q.x() << "' cy='" << q.y() << "' r='" << r << "' fill='" << color << "'/>\n";
+  }
+  void label(const Panel& P, const Vec2& p, const std::string& text, double size = 12,
+             const std::string& color = "#000", double dx = 4, double dy = -4) {
+    const Vec2 q = P.map(p);
+    labelPx(q.x() + dx, q.y() + dy, text, size, color);
+  }
+  void labelPx(double x, double y, const std::string& text, double size = 12, const std::string& color = "#000") {
+    body_ << "<text x='" << x << "' y='" << y << "' font-family='monospace' font-size='" << size
+          << "' fill='" << color << "'>" << escape(text) << "</text>\n";
+  }
+  void write(std::ostream& out) const {
+    out << "<?xml version='1.0' encoding='UTF-8'?>\n<svg xmlns='http://www.w3.org/2000/svg' width='"
+        << w_ << "' height='" << h_ << "' viewBox='0 0 " << w_ << " " << h_ << "'>\n"
+        << "<rect width='100%' height='100%' fill='white'/>\n"
+        << body_.str() << "</svg>\n";
+  }
+
+ private:
+  static std::string escape(const std::string& s) {
+    std::string r;
+    for (char ch : s) {
+      if (ch == '<') r += "&lt;";
+      else if (ch == '>') r += "&gt;";
+      else if (ch == '&') r += "&amp;";
+      else r += ch;
+    }
+    return r;
+  }
+  double w_, h_;
+  std::ostringstream body_;
+};
+
+std::string shortNum(double x) {
+  std::ostringstream os;
+  os << std::setprecision(6) << x;
+  return os.str();
+}
+
+/// Colours by pseudo-source: the same function (source, σ, side, origin) keeps its colour.
+class SourceColours {
+ public:
+  const char* operator()(const Interval& w) {
+    const auto key = std::make_tuple(w.source.x(), w.source.y(), w.sigma, w.side, w.origin);
+    auto it = index_.find(key);
+    if (it == index_.end()) it = index_.emplace(key, index_.size()).first;
+    return kPalette[it->second % std::size(kPalette)];
+  }
+
+ private:
+  std::map<std::tuple<double, double, double, int, int>, std::size_t> index_;
+};
+
+void svgPredicates(const LocalWindow& w, std::ostream& out) {
+  SvgDoc doc(900, 700);
+  const Vec2 v0(0, 0), v2(w.edgeLength, 0), v1 = w.apex, s = w.source;
+  const double scale = localScale(w);
+  const bool sourceShown = (s - 0.5 * (v0 + v2)).norm() <= 6.0 * scale;
+  double x0 = std::min({0.0, v1.x()}), x1 = std::max(w.edgeLength, v1.x());
+  double y0 = 0.0, y1 = v1.y();
+  if (sourceShown) x0 = std::min(x0, s.x()), x1 = std::max(x1, s.x()), y0 = std::min(y0, s.y());
+  else y0 = -0.3 * scale;
+  Panel P(20, 60, 860, 620, x0, y0, x1, y1, true);
+  doc.polygon(P, {v0, v1, v2}, "#eeeeee", "#999999");
+  doc.line(P, v0, v2, "#000", 2);
+  doc.line(P, Vec2(w.b0, 0), Vec2(w.b1, 0), "#1f77b4", 6);
+  const LocalPropagation r = propagateLocal(w);
+  // The wedge: rays from s through b0 and b1 to where they leave the face.
+  for (double b : {w.b0, w.b1}) {
+    const Vec2 p(b, 0);
+    const Exit x = exitOf(s, p, v0, v1, v2);
+    const Vec2 far = x.edge != 0 ? x.point : p;
+    const Vec2 from = sourceShown ? s : p - (p - s).normalized() * 0.3 * scale;
+    doc.line(P, from, far, "#ff7f0e", 1.5, true);
+  }
+  for (int i = 0; i < r.numChildren; ++i) {
+    const LocalChild& c = r.children[i];
+    doc.line(P, childPoint(w, c.edge, c.t0), childPoint(w, c.edge, c.t1), c.edge == 1 ? "#2ca02c" : "#9467bd", 5);
+  }
+  doc.dot(P, v0, 4, "#000");
+  doc.dot(P, v1, 4, "#000");
+  doc.dot(P, v2, 4, "#000");
+  doc.label(P, v0, "v0");
+  doc.label(P, v1, "v1");
+  doc.label(P, v2, "v2");
+  doc.label(P, Vec2(w.b0, 0), "b0", 11, "#1f77b4", -6, 16);
+  doc.label(P, Vec2(w.b1, 0), "b1", 11, "#1f77b4", -6, 16);
+  if (sourceShown) {
+    doc.dot(P, s, 5, "#d62728");
+    doc.label(P, s, "s");
+  }
+  doc.labelPx(20, 20, "fuzz_predicates: " + describeResult(r), 14);
+  const ExactFig6 e = exactFig6(w);
+  doc.labelPx(20, 40, "L=" + shortNum(w.edgeLength) + " v1=(" + shortNum(v1.x()) + ", " + shortNum(v1.y()) +
+                          ") [b0,b1]=[" + shortNum(w.b0) + ", " + shortNum(w.b1) + "] s=(" + shortNum(s.x()) +
+                          ", " + shortNum(s.y()) + ")  exact: " +
+                          (e.branch ? std::string(name(*e.branch)) : "near " + e.nearWhat) +
+                          "  (e1 green, e2 purple)", 12);
+  doc.write(out);
+}
+
+void svgEdgeUpdate(const EdgeUpdateCase& c, std::ostream& out) {
+  EdgeIntervals list;
+  list.assign(c.before);
+  IntervalIdSource ids{static_cast<std::uint32_t>(c.before.size() + 2)};
+  EdgeUpdateReport report;
+  std::vector<Interval> scratch;
+  std::string error;
+  try {
+    list.insert(c.incoming, c.edgeLength, ids, report, scratch);
+  } catch (const std::exception& e) {
+    error = e.what();
+  }
+  const std::vector<Interval> after(list.intervals().begin(), list.intervals().end());
+  const double L = c.edgeLength;
+  double dmin = INFINITY, dmax = -INFINITY;
+  auto span = [&](const Interval& w) {
+    for (int k = 0; k <= 32; ++k) {
+      const double d = w.distanceAt(w.b0 + (w.b1 - w.b0) * k / 32);
+      dmin = std::min(dmin, d), dmax = std::max(dmax, d);
+    }
+  };
+  for (const Interval& w : c.before) span(w);
+  span(c.incoming);
+  for (const Interval& w : after) span(w);
+  SvgDoc doc(900, 900);
+  SourceColours colour;
+  const char* titles[] = {"before", "incoming", "after Algorithm 2"};
+  const std::vector<Interval> rows[] = {c.before, {c.incoming}, after};
+  for (int row = 0; row < 3; ++row) {
+    Panel P(60, 50 + row * 180, 820, 150, 0.0, dmin, L, dmax, false);
+    doc.line(P, Vec2(0, dmin), Vec2(L, dmin), "#999", 1);
+    doc.labelPx(10, 45 + row * 180, titles[row], 13);
+    doc.labelPx(5, 50 + row * 180 + 150, shortNum(dmin), 10, "#666");
+    doc.labelPx(5, 62 + row * 180, shortNum(dmax), 10, "#666");
+    for (const Interval& w : rows[row]) {
+      std::vector<Vec2> pts;
+      for (int k = 0; k <= 48; ++k) {
+        const double x = w.b0 + (w.b1 - w.b0) * k / 48;
+        pts.emplace_back(x, w.distanceAt(x));
+      }
+      doc.polyline(P, pts, colour(w), row == 2 ? 3 : 2, row == 1);
+      doc.line(P, Vec2(w.b0, dmin), Vec2(w.b1, dmin), colour(w), 5);
+    }
+  }
+  // The edge and the pseudo-sources (drawn below the edge, where they unfold).
+  double x0 = 0, x1 = L, y0 = -0.2 * L, y1 = 0.05 * L;
+  std::vector<Interval> all = c.before;
+  all.push_back(c.incoming);
+  for (const Interval& w : all) {
+    if (w.source.norm() > 6 * L) continue;
+    x0 = std::min(x0, w.source.x()), x1 = std::max(x1, w.source.x()), y0 = std::min(y0, -w.source.y());
+  }
+  Panel G(60, 600, 820, 250, x0, y0, x1, y1, true);
+  doc.line(G, Vec2(0, 0), Vec2(L, 0), "#000", 2);
+  for (const Interval& w : all) {
+    const Vec2 s(w.source.x(), -w.source.y());
+    if (w.source.norm() > 6 * L) continue;
+    doc.line(G, s, Vec2(w.b0, 0), colour(w), 1, true);
+    doc.line(G, s, Vec2(w.b1, 0), colour(w), 1, true);
+    doc.dot(G, s, 4, colour(w));
+    doc.label(G, s, "σ=" + shortNum(w.sigma), 10, colour(w));
+  }
+  doc.labelPx(10, 595, "edge [0, " + shortNum(L) + "] and pseudo-sources (unfolded below it; far ones omitted)", 12);
+  doc.labelPx(10, 20, "fuzz_edge_update: distance functions coloured by pseudo-source" +
+                          (error.empty() ? std::string() : "; insert threw: " + error), 14);
+  doc.write(out);
+}
+
+/// The mesh projected onto the plane of its two widest bounding-box axes.
+void svgMesh(const TriangleSoup& soup, const std::vector<Vec3>& sources, std::span<const double> d,
+             const std::string& title, std::ostream& out) {
+  Vec3 lo = Vec3::Constant(INFINITY), hi = Vec3::Constant(-INFINITY);
+  for (const Vec3& p : soup.positions) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  const Vec3 ext = hi - lo;
+  int drop = 0;
+  for (int k = 1; k < 3; ++k)
+    if (ext[k] < ext[drop]) drop = k;
+  const int ax = drop == 0 ? 1 : 0, ay = drop == 2 ? 1 : 2;
+  auto proj = [&](const Vec3& p) { return Vec2(p[ax], p[ay]); };
+  SvgDoc doc(900, 900);
+  Panel P(20, 40, 860, 840, lo[ax], lo[ay], hi[ax], hi[ay], true);
+  for (const auto& f : soup.faces)
+    doc.polygon(P, {proj(soup.positions[f[0]]), proj(soup.positions[f[1]]), proj(soup.positions[f[2]])},
+                "#dde8f4", "#6b7f99");
+  for (std::size_t x = 0; x < soup.positions.size(); ++x) {
+    doc.dot(P, proj(soup.positions[x]), 2.5, "#333");
+    std::string text = std::to_string(x);
+    if (x < d.size()) text += ": " + (std::isfinite(d[x]) ? shortNum(d[x]) : std::string("inf"));
+    doc.label(P, proj(soup.positions[x]), text, 10, "#333");
+  }
+  for (const Vec3& s : sources) doc.dot(P, proj(s), 6, "#d62728");
+  const char* axes = "xyz";
+  doc.labelPx(20, 22, title + " (projected onto " + axes[ax] + axes[ay] + "; sources red)", 14);
+  doc.write(out);
+}
+
+void svgPropagation(const PropagationCase& c, std::ostream& out) {
+  const auto& P3 = c.soup.positions;
+  // Unfold: v0 at the origin, v2 on +x, v1 (face B) above, w (face A) below.
+  const Vec3 o = P3[0], dir = (P3[1] - o).normalized();
+  auto unfold = [&](const Vec3& p, double sign) {
+    const Vec3 rel = p - o;
+    return Vec2(rel.dot(dir), sign * (rel - rel.dot(dir) * dir).norm());
+  };
+  const std::array<Vec2, 4> q{Vec2(0, 0), Vec2((P3[1] - o).norm(), 0), unfold(P3[2], 1), unfold(P3[3], -1)};
+  auto at = [&](const SurfacePoint& p) -> Vec2 {
+    switch (p.kind) {
+      case SurfacePoint::Kind::Vertex: return q[p.vertex];
+      case SurfacePoint::Kind::Edge: return (1 - p.t) * q[p.vertex] + p.t * q[p.toVertex];
+      case SurfacePoint::Kind::Face: {
+        const auto& F = c.soup.faces[p.face];
+        return p.bary[0] * q[F[0]] + p.bary[1] * q[F[1]] + p.bary[2] * q[F[2]];
+      }
+    }
+    return Vec2(0, 0);
+  };
+  Vec2 lo = q[0], hi = q[0];
+  for (const Vec2& p : q) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  SvgDoc doc(900, 900);
+  Panel G(20, 40, 860, 840, lo.x(), lo.y(), hi.x(), hi.y(), true);
+  doc.polygon(G, {q[0], q[2], q[1]}, "#dde8f4", "#6b7f99");
+  doc.polygon(G, {q[0], q[1], q[3]}, "#f4ecd0", "#99875b");
+  std::string status;
+  try {
+    const Mesh mesh(c.soup);
+    GeodesicSolver solver(mesh);
+    const std::vector<SurfacePoint> sources{c.source};
+    solver.solve(sources);
+    SourceColours colour;
+    const double px = 1.0 / G.sx;  // one pixel in world units
+    for (Index e = 0; e < mesh.numEdges(); ++e) {
+      const Edge& E = mesh.edge(e);
+      const Vec2 a = q[E.vertex[0]], d2 = (q[E.vertex[1]] - a).normalized();
+      for (const Interval& w : solver.edgeIntervals()[e].intervals()) {
+        // The side the source is on: towards the third vertex of face[side] in the picture.
+        const auto& F = mesh.face(E.face[w.side]);
+        Index third = 0;
+        for (Index x : F)
+          if (x != E.vertex[0] && x != E.vertex[1]) third = x;
+        Vec2 n(-d2.y(), d2.x());
+        if (n.dot(q[third] - a) < 0) n = -n;
+        const Vec2 off = 3 * px * n;
+        doc.line(G, a + w.b0 * d2 + off, a + w.b1 * d2 + off, colour(w), 4);
+        const Vec2 s = a + w.source.x() * d2 + w.source.y() * n;
+        if ((s - 0.5 * (lo + hi)).norm() < 2 * (hi - lo).norm()) doc.dot(G, s, 3, colour(w));
+      }
+    }
+    for (Index x = 0; x < 4; ++x) {
+      const double dx = solver.vertexDistances()[x];
+      doc.label(G, q[x], std::to_string(x) + ": " + (std::isfinite(dx) ? shortNum(dx) : std::string("inf")), 11);
+    }
+  } catch (const std::exception& e) {
+    status = std::string("; the solve threw: ") + e.what();
+  }
+  doc.dot(G, at(c.source), 6, "#d62728");
+  doc.labelPx(20, 22, "fuzz_propagation: faces B (blue) and A (sand) unfolded, intervals and pseudo-sources by colour" + status, 13);
+  doc.write(out);
+}
+
+}  // namespace
+
+void writeSvg(FuzzTarget t, std::span<const std::uint8_t> bytes, std::ostream& out) {
+  const auto decoded = decode(t, bytes);
+  if (!decoded) {
+    SvgDoc doc(600, 60);
+    Panel P(0, 0, 600, 60, 0, 0, 1, 1, false);
+    doc.labelPx(10, 30, std::string(name(t)) + ": the target skips these bytes", 14);
+    doc.write(out);
+    return;
+  }
+  if (const auto* c = std::get_if<PredicateCase>(&*decoded)) return svgPredicates(c->window, out);
+  if (const auto* c = std::get_if<EdgeUpdateCase>(&*decoded)) return svgEdgeUpdate(*c, out);
+  if (const auto* c = std::get_if<PropagationCase>(&*decoded)) return svgPropagation(*c, out);
+  if (const auto* c = std::get_if<SolverCase>(&*decoded)) {
+    std::vector<Vec3> sources;
+    for (const SurfacePoint& s : c->sources) sources.push_back(surfacePointPosition(c->soup, s));
+    std::vector<double> d;
+    try {
+      const Mesh mesh(c->soup);
+      d = exactGeodesicDistance(mesh, c->sources);
+    } catch (const std::exception&) {
+    }
+    return svgMesh(c->soup, sources, d, "fuzz_solver: vertex: distance", out);
+  }
+  const auto& m = std::get<MeshIoCase>(*decoded);
+  try {
+    const MeshReadResult r = readMeshFromMemory(m.bytes, "fuzz-input", m.formatHint);
+    return svgMesh(r.soup, {}, {}, "fuzz_mesh_io: the mesh read", out);
+  } catch (const std::exception& e) {
+    SvgDoc doc(900, 60);
+    doc.labelPx(10, 30, std::string("fuzz_mesh_io: not a mesh: ") + e.what(), 12);
+    doc.write(out);
+  }
+}
+
+// ===  runRepro ==================================================================================
+
+int runRepro(const std::string& path, std::optional<FuzzTarget> target,
+             const std::optional<std::string>& svgPath, std::ostream& out) {
+  std::vector<std::uint8_t> bytes;
+  try {
+    bytes = readFileBytes(path);
+  } catch (const InputError& e) {
+    out << "error: " << e.what() << "\n";
+    return 2;
+  }
+  if (!target) target = detectTarget(path, bytes);
+  if (!target) {
+    out << "error: " << path << ": cannot tell which fuzz target this file is for; pass --target with one of";
+    for (FuzzTarget t : kFuzzTargets) out << " " << name(t);
+    out << "\n";
+    return 2;
+  }
+  out << "target: " << name(*target) << "\n";
+  describe(*target, bytes, out);
+  const Verdict v = replay(*target, bytes, CheckDepth::Full);
+  if (svgPath) {
+    std::ofstream svg(*svgPath);
+    writeSvg(*target, bytes, svg);
+    out << (svg ? "svg: " : "error: cannot write ") << *svgPath << "\n";
+  }
+  if (!v.interesting) {
+    out << "verdict: skipped (" << v.summary << ")\n";
+    return 0;
+  }
+  out << "exercised: " << v.summary << "; degeneracies ";
+  describeCounters(v.degeneracies, out);
+  out << "\n";
+  if (v.ok()) {
+    out << "verdict: pass\n";
+    return 0;
+  }
+  out << "verdict: FAIL: " << v.failed << "\n" << v.message << "\n";
+  return 1;
+}
+
+}  // namespace geodex::verify
