@@ -337,8 +337,8 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, Interval
       if (gap == 0.0) continue;
       const double tiny = std::max(tinyLength(L[k], edgeLength), tinyLength(L[k + 1], edgeLength));
       if (gap > 0.0) {
-        // The shadow a flat vertex leaves grows with the distance (see tol::kFlatVertexAngle).
-        const double shadow = tol::kFlatVertexAngle *
+        // A gap that subtends less than kSewAngle as seen from the wavefront (see tolerance.h).
+        const double shadow = tol::kSewAngle *
                               std::min(L[k].distanceAt(L[k].b1), L[k + 1].distanceAt(L[k + 1].b0));
         if (gap >= std::max(tiny, shadow)) continue;
       } else if (gap <= -tiny) {
