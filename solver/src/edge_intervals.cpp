@@ -100,7 +100,7 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, Interval
     w.b0 = lo;
     w.b1 = hi;
     clipPropagated(w);
-    w.queuedKey = -1.0;
+    w.queuedKey = -1.0f;
     if (incomingIdUsed) w.id = ids();
     incomingIdUsed = true;
     return w;
@@ -144,7 +144,7 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, Interval
         split.push_back(left);
         w.b0 = in.b0;
         w.id = ids();
-        w.queuedKey = -1.0;
+        w.queuedKey = -1.0f;
       }
       Interval right = w;
       const bool hasRight = w.b1 > in.b1;
@@ -152,7 +152,7 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, Interval
         w.b1 = in.b1;
         right.b0 = in.b1;
         right.id = ids();
-        right.queuedKey = -1.0;
+        right.queuedKey = -1.0f;
         clipPropagated(right);
       }
       clipPropagated(w);
@@ -164,21 +164,22 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, Interval
   //     two; the new interval fills what no old interval covered. (A D2 repair may have
   //     consumed the whole, tiny, incoming interval: then there is nothing to compare.)
   if (in.b1 <= in.b0) {
-    list_.swap(out);
+    list_.assign(out.begin(), out.end());
     out.clear();
   } else {
-    // Move the split list aside; rebuild `list_` as the merged result.
-    list_.swap(out);
-    out.clear();
+    // Read the split list from `out`, build the merged one in a second reused buffer.
+    const std::vector<Interval>& split = out;
+    static thread_local std::vector<Interval> merged;
+    merged.clear();
     std::size_t i = 0;
-    for (; i < list_.size() && list_[i].b1 <= in.b0; ++i) out.push_back(list_[i]);
+    for (; i < split.size() && split[i].b1 <= in.b0; ++i) merged.push_back(split[i]);
     double cursor = in.b0;
-    for (; i < list_.size() && list_[i].b0 < in.b1; ++i) {
-      const Interval& old = list_[i];
-      if (old.b0 > cursor) out.push_back(newPiece(cursor, old.b0));  // a gap: the new one's
+    for (; i < split.size() && split[i].b0 < in.b1; ++i) {
+      const Interval& old = split[i];
+      if (old.b0 > cursor) merged.push_back(newPiece(cursor, old.b0));  // a gap: the new one's
       cursor = old.b1;
       if (sameSource(in, old, edgeLength)) {  // the same geodesic arriving again: keep the old
-        out.push_back(old);
+        merged.push_back(old);
         continue;
       }
       // Eq. 1's roots only *propose* where the winner may change: with σ or the source distance
@@ -252,7 +253,7 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, Interval
       bool oldIdUsed = false;
       for (int k = 0; k < m; ++k) {
         if (cutWins[k]) {
-          out.push_back(newPiece(cut[k], cut[k + 1]));
+          merged.push_back(newPiece(cut[k], cut[k + 1]));
         } else {
           Interval w = old;
           w.b0 = cut[k];
@@ -260,17 +261,19 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, Interval
           clipPropagated(w);
           if (oldIdUsed) {
             w.id = ids();
-            w.queuedKey = -1.0;
+            w.queuedKey = -1.0f;
           }
           oldIdUsed = true;
-          out.push_back(w);
+          merged.push_back(w);
         }
       }
     }
-    if (cursor < in.b1) out.push_back(newPiece(cursor, in.b1));
-    for (; i < list_.size(); ++i) out.push_back(list_[i]);
+    if (cursor < in.b1) merged.push_back(newPiece(cursor, in.b1));
+    for (; i < split.size(); ++i) merged.push_back(split[i]);
     report.incomingSurvived = incomingIdUsed;
-    list_.swap(out);
+    // assign, not swap: the edge's buffer then grows to exactly what it holds (intervals are
+    // most of the solver's memory), and the scratch keeps its large capacity for reuse.
+    list_.assign(merged.begin(), merged.end());
     out.clear();
   }
 
@@ -337,8 +340,8 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, Interval
       if (gap == 0.0) continue;
       const double tiny = std::max(tinyLength(L[k], edgeLength), tinyLength(L[k + 1], edgeLength));
       if (gap > 0.0) {
-        // A gap that subtends less than kSewAngle as seen from the wavefront (see tolerance.h).
-        const double shadow = tol::kSewAngle *
+        // The shadow a flat vertex leaves grows with the distance (see tol::kFlatVertexAngle).
+        const double shadow = tol::kFlatVertexAngle *
                               std::min(L[k].distanceAt(L[k].b1), L[k + 1].distanceAt(L[k + 1].b0));
         if (gap >= std::max(tiny, shadow)) continue;
       } else if (gap <= -tiny) {
@@ -380,7 +383,7 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, Interval
 
   for (Interval& w : L) {
     if (w.fullyPropagated()) continue;
-    if (w.queuedKey != w.minDistance()) report.toQueue.push_back(w.id);
+    if (w.queuedKey != static_cast<float>(w.minDistance())) report.toQueue.push_back(w.id);
   }
   if (!report.incomingSurvived) {
     for (const Interval& w : L)

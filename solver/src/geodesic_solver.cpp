@@ -80,10 +80,10 @@ void GeodesicSolver::solve(std::span<const SurfacePoint> sources, const SolveOpt
       continue;
     }
     Interval* w = edges_[top.edge].find(top.id);
-    if (w == nullptr || w->fullyPropagated() || w->queuedKey != top.key) continue;
+    if (w == nullptr || w->fullyPropagated() || w->queuedKey != static_cast<float>(top.key)) continue;
     const Interval window = *w;
     w->markPropagated();
-    w->queuedKey = -1.0;
+    w->queuedKey = -1.0f;
     propagate(top.edge, window);
   }
   finish(options, radius);
@@ -296,7 +296,7 @@ void GeodesicSolver::addInterval(Index edge, const Interval& w, const Fig6Branch
   for (std::uint32_t id : report_.toQueue) {
     Interval* iv = list.find(id);
     const double key = iv->minDistance();
-    iv->queuedKey = key;
+    iv->queuedKey = static_cast<float>(key);
     queue_.push({key, edge, id});
   }
   const auto intervals = list.intervals();

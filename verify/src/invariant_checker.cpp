@@ -169,7 +169,7 @@ void InvariantChecker::onEdgeUpdate(const EdgeUpdateEvent& e) {
   tiny = std::max(tiny, tinyLength(e.incoming, e.edgeLength));
   auto valueWithSlack = [&](const Interval& w, double x) {
     const double v = w.distanceAt(x);
-    const double slack = std::max(tinyLength(w, e.edgeLength), tol::kSewAngle * v);
+    const double slack = std::max(tinyLength(w, e.edgeLength), tol::kFlatVertexAngle * v);
     return x >= w.b0 - slack && x <= w.b1 + slack ? v : INFINITY;
   };
   auto insideRemovedTiny = [&](double x) {

@@ -26,8 +26,8 @@ inline constexpr double kFlatFaceRel = 1e-12;
 // ===  Geodesic discontinuities (Sect. 3.2 and 4.2, Algorithm 2 steps 3–5) =====================
 
 /// D1: intervals shorter than this × their length scale are removed (merged into a neighbour).
-/// D3: gaps shorter than this × the neighbours' length scale, or than kSewAngle × the distance
-///     there, are sewn at their midpoint.
+/// D3: gaps shorter than this × the neighbours' length scale, or than kFlatVertexAngle × the
+///     distance there, are sewn at their midpoint.
 /// The length scale of an interval is max(edge length, distance from its pseudo-source to the
 /// edge): its ends come from rays cast from that source, so they carry rounding of ~1e-16 × that
 /// distance. (A window from a source 1e5 edge lengths away has ends good to ~1e-11 × the edge
@@ -67,17 +67,12 @@ inline constexpr double kPruneRel = 1e-12;
 /// pseudo-source (as the reference code does) multiplies the windows per edge by ~15 for nothing.
 /// Pseudo-sources are boundary vertices, non-manifold vertices, and vertices whose angle sum
 /// exceeds 2π + this. A flat vertex can leave a shadow wedge of at most this angle between the
-/// windows passing either side of it, which kSewAngle closes.
+/// windows passing either side of it; Algorithm 2 step 4 sews gaps up to this × the distance,
+/// which closes that wedge at any distance from the vertex. (Sewing wider gaps, up to 1e-10 ×
+/// the distance, was tried and rejected: a mid-run gap that wide can be real — the wavefront has
+/// not arrived — and extending a window over it is not a path; it opened gaps on fandisk.off.)
 inline constexpr double kFlatVertexAngle = 1e-12;
 
-/// D3: a gap narrower than this × the distance there is sewn, whatever the edge length. Seen from
-/// the wavefront such a gap subtends less than this angle (radians): below what ties and chains
-/// of unfoldings resolve. Two sources cause it: the shadow of a flat vertex (≤ kFlatVertexAngle)
-/// and a pseudo-source lying a hair off another source's ray, which wins a sliver at a tie point
-/// whose two boundary rays then diverge (measured: 1.7e-11 rad on libcgal-demo's
-/// anchor_dense.off, a 4.5e-12 gap at distance 0.27). Sewing it moves a distance by at most the
-/// gap, i.e. this × the distance, ten times below the 1e-9 accuracy target.
-inline constexpr double kSewAngle = 1e-10;
 
 /// Barycentric or edge parameters within this of 0 or 1 snap a source or target onto the
 /// edge or vertex it is on.
