@@ -197,9 +197,13 @@ void symmetryInto(OracleResult& r, const Mesh& mesh, const SurfacePoint& a, std:
 // Rotates a planar soup into the z = 0 plane; false if it is not planar.
 bool flattenIfPlanar(const TriangleSoup& soup, double diag, TriangleSoup& flat) {
   if (soup.faces.empty()) return false;
+  // Sum of face normals, each turned to agree with the first: winding may be inconsistent
+  // (Kirsanov's flat mesh alternates), which must not cancel the sum.
   Vec3 n = Vec3::Zero();
-  for (const auto& f : soup.faces)
-    n += (soup.positions[f[1]] - soup.positions[f[0]]).cross(soup.positions[f[2]] - soup.positions[f[0]]);
+  for (const auto& f : soup.faces) {
+    const Vec3 fn = (soup.positions[f[1]] - soup.positions[f[0]]).cross(soup.positions[f[2]] - soup.positions[f[0]]);
+    n += n.dot(fn) < 0.0 ? Vec3(-fn) : fn;
+  }
   if (n.norm() == 0.0) return false;
   n.normalize();
   const Vec3 o = soup.positions[soup.faces[0][0]];
