@@ -25,5 +25,8 @@ echo "== geodex distance $MESH --source v:0 --stats --out build/demo/distances.t
 build/release/bin/geodex distance "$MESH" --source v:0 --stats --out build/demo/distances.txt
 echo "distances (one line per vertex): build/demo/distances.txt"
 
-# --- later: render the distance field -----------------------------------------------------------
-# build/release/bin/geodex render "$MESH" --source v:0 --out build/demo/elephant.png
+# --- render the distance field, with the geodesic from v:0 to a hind foot -----------------------
+echo
+echo "== geodex render $MESH --source v:0 --target v:2000 --out build/demo/elephant.png"
+build/release/bin/geodex render "$MESH" --source v:0 --target v:2000 --out build/demo/elephant.png
+echo "picture (distance colours, isolines, source disc, path in red): build/demo/elephant.png"

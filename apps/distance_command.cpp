@@ -1,5 +1,7 @@
-// `geodex distance MESH --source SPEC… [--stop-distance D] [--target SPEC…] [--out FILE] [--stats]`
-// One line per vertex, in vertex order: the geodesic distance (%.17g) or `inf`.
+// `geodex distance MESH --source SPEC… [--stop-distance D] [--target SPEC…] [--out FILE] [--stats]
+//                  [--quiet]`
+// One line per vertex, in vertex order: the geodesic distance (%.17g) or `inf`; with
+// `--out FILE.ply`, the mesh with the distances on its vertices instead (ply_writer.h).
 
 #include <algorithm>
 #include <chrono>
@@ -16,6 +18,8 @@
 #include "degeneracy_table.h"
 #include "geodex/error.h"
 #include "geodex/geodesic_solver.h"
+#include "ply_writer.h"
+#include "progress.h"
 
 namespace geodex::cli {
 
@@ -28,6 +32,7 @@ struct DistanceOptions {
   double stopDistance = kInfinity;
   std::string outPath;
   bool stats = false;
+  bool quiet = false;
 };
 
 double secondsSince(std::chrono::steady_clock::time_point start) {
@@ -97,20 +102,27 @@ int runDistance(const DistanceOptions& o) {
   OutputFile out(o.outPath);
 
   GeodesicSolver solver(mesh);
+  ProgressReporter progress(solver);
+  if (showProgress(o.quiet)) solver.setObserver(&progress);
   SolveOptions options;
   options.stopDistance = o.stopDistance;
   options.targets = targets;
   const auto solveStart = std::chrono::steady_clock::now();
   solver.solve(sources, options);
   const double solveSeconds = secondsSince(solveStart);
+  solver.setObserver(nullptr);
 
-  char buffer[32];
-  for (double d : solver.vertexDistances()) {
-    if (std::isinf(d) && d > 0) {
-      std::fputs("inf\n", out.get());
-    } else {
-      std::snprintf(buffer, sizeof buffer, "%.17g\n", d);
-      std::fputs(buffer, out.get());
+  if (hasPlyExtension(o.outPath)) {
+    writeDistancePly(out.get(), mesh, solver.vertexDistances(), o.sources);
+  } else {
+    char buffer[32];
+    for (double d : solver.vertexDistances()) {
+      if (std::isinf(d) && d > 0) {
+        std::fputs("inf\n", out.get());
+      } else {
+        std::snprintf(buffer, sizeof buffer, "%.17g\n", d);
+        std::fputs(buffer, out.get());
+      }
     }
   }
   out.commit();
@@ -143,10 +155,13 @@ Command addDistanceCommand(CLI::App& app) {
       ->type_name("SPEC");
   sub->add_option("--out,-o", o->outPath,
                   "Write the distances to FILE (atomically: whole or not at all) instead of "
-                  "stdout")
+                  "stdout; FILE.ply: the mesh as ASCII PLY with per-vertex distance (-1 where "
+                  "unreachable) and viridis colours")
       ->type_name("FILE");
   sub->add_flag("--stats", o->stats,
                 "Print counts, distance range, time and the degeneracy table to stderr");
+  sub->add_flag("--quiet,-q", o->quiet, "No progress on stderr (shown only on a terminal, for "
+                                        "solves longer than a second)");
   return {sub, [o] { return runDistance(*o); }};
 }
 

@@ -48,7 +48,8 @@ int runMain(int argc, char** argv) {
   app.footer(kFooter);
 
   const std::vector<Command> commands{addDistanceCommand(app), addPathCommand(app),
-                                      addInfoCommand(app), addCheckCommand(app)};
+                                      addInfoCommand(app), addCheckCommand(app),
+                                      addRenderCommand(app)};
 
   try {
     app.parse(argc, argv);
