@@ -237,51 +237,9 @@ void GeodesicSolver::propagate(Index edge, const Interval& w) {
       n.origin = w.origin;
       n.id = ids_();
       if (CE.face[1 - n.side] == kNoIndex) n.markPropagated();
-      if (!trimByVertexDistances(ce, n)) {
-        ++stats_.intervalsPruned;
-        continue;
-      }
       addInterval(ce, n, &result.branch);
     }
   }
-}
-
-// ===  Vertex-distance filter ====================================================================
-// f(x) = σ + |x − s| against the paths through the edge's ends, g0(x) = D(v0) + x and
-// g1(x) = D(v1) + (L − x): f − g0 is non-increasing and f − g1 non-decreasing in x (|x − s| is
-// 1-Lipschitz), so each comparison cuts [b0, b1] at most once, where f equals the bound. Where f
-// exceeds a bound no geodesic passes (the path through the vertex is shorter, and D(v) is always
-// the length of a real path), so the cut keeps the solve exact.
-bool GeodesicSolver::trimByVertexDistances(Index edge, Interval& w) const {
-  const Edge& E = mesh_.edge(edge);
-  const double L = E.length;
-  const double sx = w.source.x(), sy = w.source.y();
-  const double D0 = vertexDistance_[E.vertex[0]], D1 = vertexDistance_[E.vertex[1]];
-  // g0 is the smaller near v0: it can win a prefix of the window (or all of it).
-  if (D0 != kInfinity) {
-    const double bound = D0 + tol::kPruneRel * (D0 + L);
-    if (w.distanceAt(w.b1) > bound + w.b1) return false;
-    if (w.distanceAt(w.b0) > bound + w.b0) {
-      // σ + |x − s| = bound + x  ⇔  x = (sx² + sy² − k²) / (2 (sx + k)), k = bound − σ.
-      const double k = bound - w.sigma;
-      const double denom = 2.0 * (sx + k);
-      const double x = denom > 0.0 ? (sx * sx + sy * sy - k * k) / denom : w.b1;
-      w.b0 = std::clamp(x, w.b0, w.b1);
-    }
-  }
-  // g1 is the smaller near v1: it can win a suffix.
-  if (D1 != kInfinity) {
-    const double bound = D1 + tol::kPruneRel * (D1 + L);
-    if (w.distanceAt(w.b0) > bound + (L - w.b0)) return false;
-    if (w.distanceAt(w.b1) > bound + (L - w.b1)) {
-      // σ + |x − s| = bound + L − x  ⇔  x = (k² − sx² − sy²) / (2 (k − sx)), k = bound + L − σ.
-      const double k = bound + L - w.sigma;
-      const double denom = 2.0 * (k - sx);
-      const double x = denom > 0.0 ? (k * k - sx * sx - sy * sy) / denom : w.b0;
-      w.b1 = std::clamp(x, w.b0, w.b1);
-    }
-  }
-  return w.b1 > w.b0;
 }
 
 // ===  Edge updates and vertex distances ==========================================================

@@ -37,7 +37,6 @@ struct SolveOptions {
 
 struct SolveStats {
   std::uint64_t intervalsCreated = 0;    ///< intervals handed to Algorithm 2
-  std::uint64_t intervalsPruned = 0;     ///< new windows dropped whole by the vertex filter
   std::uint64_t intervalsPropagated = 0; ///< windows popped and propagated across a face
   std::uint64_t pseudoSourceEvents = 0;  ///< saddle/boundary vertices turned into pseudo-sources
   std::uint64_t maxIntervalsPerEdge = 0;
@@ -92,8 +91,6 @@ class GeodesicSolver {
   void reset();
   void seedSource(const ResolvedPoint& p, std::size_t number);
   void addInterval(Index edge, const Interval& w, const Fig6Branch* branch);
-  /// Trims a propagated window by its edge's end-vertex distances; false if nothing is left.
-  bool trimByVertexDistances(Index edge, Interval& w) const;
   void pushInterval(Index edge, const Interval& w);
   void updateVertex(Index v, double d);
   void createPseudoSourceWindows(Index v, double sigma, std::int32_t origin);

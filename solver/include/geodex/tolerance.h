@@ -52,13 +52,6 @@ inline constexpr double kContinuityRel = 1e-10;
 /// per decision keeps results within 1e-12 relative even along long chains of ties.
 inline constexpr double kTieRel = 1e-14;
 
-/// Vertex-distance filter (Surazhsky et al. 2005, Sect. 4): the part of a new window that is
-/// longer than the path through an end vertex of its edge, D(v) + |v x|, by more than this ×
-/// (D(v) + edge length) is trimmed off before Algorithm 2. No geodesic passes through that part
-/// (any path through it is beaten by the path through v), so exactness is kept; the margin keeps
-/// rounding (~1e-15) from trimming the very window that gave D(v).
-inline constexpr double kPruneRel = 1e-12;
-
 // ===  Mesh-level ================================================================================
 
 /// A vertex is *flat* when its angle sum is within this of 2π (atan2 angle sums carry ~3e-15 of
