@@ -19,6 +19,7 @@ Command addDistanceCommand(CLI::App& app);
 Command addPathCommand(CLI::App& app);
 Command addInfoCommand(CLI::App& app);
 Command addCheckCommand(CLI::App& app);
+Command addReproCommand(CLI::App& app);
 Command addRenderCommand(CLI::App& app);
 
 }  // namespace geodex::cli

@@ -48,7 +48,7 @@ int runMain(int argc, char** argv) {
   app.footer(kFooter);
 
   const std::vector<Command> commands{addDistanceCommand(app), addPathCommand(app),
-                                      addInfoCommand(app), addCheckCommand(app),
+                                      addInfoCommand(app), addCheckCommand(app), addReproCommand(app),
                                       addRenderCommand(app)};
 
   try {
