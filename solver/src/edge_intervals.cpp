@@ -195,7 +195,11 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, Interval
         roots[0] = 0.5 * (roots[0] + roots[1]);
         numRoots = 1;
       }
-      double sample[5];
+      // h = f − g has h' = cos θ_in − cos θ_old, zero only where x is collinear with the two
+      // sources (both lie on one side of the line, heights >= 0): so h is monotone on either
+      // side of that point x*, and with x* among the samples every sign change of h lies between
+      // two samples. (Sources on the line itself add kinks at their feet: sampled too.)
+      double sample[9];
       int numSamples = 0;
       sample[numSamples++] = old.b0;
       {
@@ -206,8 +210,16 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, Interval
           prev = next;
         }
       }
+      const double y1 = in.source.y(), y2 = old.source.y();
+      if (y1 != y2) {
+        const double xStar = (in.source.x() * y2 - old.source.x() * y1) / (y2 - y1);
+        if (xStar > old.b0 && xStar < old.b1) sample[numSamples++] = xStar;
+      }
+      for (const double foot : {in.source.x(), old.source.x()})
+        if (foot > old.b0 && foot < old.b1) sample[numSamples++] = foot;
       sample[numSamples++] = old.b1;
-      bool wins[5];
+      std::sort(sample, sample + numSamples);
+      bool wins[9];
       for (int k = 0; k < numSamples; ++k) wins[k] = incomingWins(in, old, sample[k]);
       // Where the two distances agree at an end of the piece (both windows through the same
       // point, typically a vertex or a shared boundary ray), the tie there says nothing about
@@ -218,8 +230,8 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, Interval
       };
       if (agreeAt(old.b0)) wins[0] = wins[1];
       if (agreeAt(old.b1)) wins[numSamples - 1] = wins[numSamples - 2];
-      double cut[6];
-      bool cutWins[5];
+      double cut[10];
+      bool cutWins[9];
       int m = 0;
       cut[0] = old.b0;
       cutWins[0] = wins[0];
