@@ -13,10 +13,10 @@
 
 #include "coverage.h"
 #include "generators.h"
-#include "weighted_prop.h"
 #include "geodex/edge_intervals.h"
 #include "geodex/observer.h"
 #include "geodex/verify/invariant_checker.h"
+#include "weighted_prop.h"
 
 namespace geodex::proptest {
 namespace {
@@ -51,18 +51,22 @@ DegeneracyCounters runAndCheck(const IntervalListCase& c) {
     found += report.degeneracies;
     recordAlgorithm2(report.degeneracies);
 
-    const EdgeUpdateEvent event{0, c.edgeLength, before, incoming, list.intervals(), report, nullptr};
+    const EdgeUpdateEvent event{0,      c.edgeLength, before, incoming, list.intervals(),
+                                report, nullptr};
     try {
       checker.onEdgeUpdate(event);  // the cheap tier (checkList) and the pointwise minimum
     } catch (const verify::InvariantViolation& v) {
       verify::writeReproducer(v, kFailureReproducerFile);
-      RC_FAIL("insertion " + std::to_string(i) + ": " + v.what() + "\n  before:" + describeList(before) +
-              "\n  after:" + describeList(list.intervals()) + "\n  reproducer written to " +
+      RC_FAIL("insertion " + std::to_string(i) + ": " + v.what() +
+              "\n  before:" + describeList(before) + "\n  after:" + describeList(list.intervals()) +
+              "\n  reproducer written to " +
               (std::filesystem::current_path() / kFailureReproducerFile).string() +
-              " (replay: bin/fuzz_edge_update FILE or geodex repro FILE; keep it as corpus/fuzz_edge_update/regress/open-<what it broke>)");
+              " (replay: bin/fuzz_edge_update FILE or geodex repro FILE; keep it as "
+              "corpus/fuzz_edge_update/regress/open-<what it broke>)");
     }
     std::string why;
-    const std::string broken = verify::InvariantChecker::checkList(list.intervals(), c.edgeLength, why);
+    const std::string broken =
+        verify::InvariantChecker::checkList(list.intervals(), c.edgeLength, why);
     if (!broken.empty()) {
       RC_FAIL("insertion " + std::to_string(i) + " left the list broken (" + broken + "): " + why +
               "\n  before:" + describeList(before) + "\n  after:" + describeList(list.intervals()));
@@ -71,7 +75,8 @@ DegeneracyCounters runAndCheck(const IntervalListCase& c) {
   return found;
 }
 
-GEODEX_RC_GTEST_PROP(Algorithm2, KeepsTheListWellFormedAndThePointwiseMinimum, kLocalPropertyWeight, ()) {
+GEODEX_RC_GTEST_PROP(Algorithm2, KeepsTheListWellFormedAndThePointwiseMinimum, kLocalPropertyWeight,
+                     ()) {
   const IntervalListCase c = *gen::intervalListCase();
   const DegeneracyCounters found = runAndCheck(c);
   RC_TAG(c.target);
@@ -83,7 +88,8 @@ GEODEX_RC_GTEST_PROP(Algorithm2, KeepsTheListWellFormedAndThePointwiseMinimum, k
 
 // The far-source scenario alone, the one that reaches D4 (Eq. 1 loses its digits when σ or the
 // source distance is 1e3–1e7 edge lengths): run often enough for the coverage gate.
-GEODEX_RC_GTEST_PROP(Algorithm2, FarSourceAgainstNearSourceKeepsThePointwiseMinimum, kLocalPropertyWeight, ()) {
+GEODEX_RC_GTEST_PROP(Algorithm2, FarSourceAgainstNearSourceKeepsThePointwiseMinimum,
+                     kLocalPropertyWeight, ()) {
   const IntervalListCase c = *gen::mismatchedEndpointList();
   const DegeneracyCounters found = runAndCheck(c);
   RC_TAG(c.target);

@@ -13,8 +13,9 @@
 namespace geodex::proptest {
 namespace {
 
-using Table = std::array<std::array<std::uint64_t, static_cast<std::size_t>(CoverageSource::kCount)>,
-                         kNumDegeneracyKinds>;
+using Table =
+    std::array<std::array<std::uint64_t, static_cast<std::size_t>(CoverageSource::kCount)>,
+               kNumDegeneracyKinds>;
 
 Table& table() {
   static Table t{};
@@ -31,16 +32,19 @@ std::map<std::string, double>& accuracy() {
 }
 
 void add(const DegeneracyCounters& c, CoverageSource s) {
-  for (std::size_t k = 0; k < kNumDegeneracyKinds; ++k) cell(static_cast<DegeneracyKind>(k), s) += c.count[k];
+  for (std::size_t k = 0; k < kNumDegeneracyKinds; ++k)
+    cell(static_cast<DegeneracyKind>(k), s) += c.count[k];
 }
 
 // Why the gate should not judge this run ("" if it should).
 std::string reasonNotToJudge() {
-  if (const char* force = std::getenv("GEODEX_COVERAGE_GATE"); force != nullptr && std::strcmp(force, "force") == 0)
+  if (const char* force = std::getenv("GEODEX_COVERAGE_GATE");
+      force != nullptr && std::strcmp(force, "force") == 0)
     return "";
   const std::string filter = GTEST_FLAG_GET(filter);
   if (filter != "*") return "only the tests matching --gtest_filter=" + filter + " ran";
-  if (!rc::detail::configuration().reproduce.empty()) return "RapidCheck is replaying failures (RC_PARAMS=reproduce=...)";
+  if (!rc::detail::configuration().reproduce.empty())
+    return "RapidCheck is replaying failures (RC_PARAMS=reproduce=...)";
   return "";
 }
 
@@ -49,7 +53,9 @@ std::string reasonNotToJudge() {
 void recordLocal(Fig6Branch branch) {
   if (const auto kind = degeneracyOf(branch)) ++cell(*kind, CoverageSource::Local);
 }
-void recordAlgorithm2(const DegeneracyCounters& counters) { add(counters, CoverageSource::Algorithm2); }
+void recordAlgorithm2(const DegeneracyCounters& counters) {
+  add(counters, CoverageSource::Algorithm2);
+}
 void recordSolve(const DegeneracyCounters& counters) { add(counters, CoverageSource::Solve); }
 
 void recordAccuracy(const char* check, double relativeError) {
@@ -57,7 +63,9 @@ void recordAccuracy(const char* check, double relativeError) {
   worst = std::max(worst, relativeError);
 }
 
-std::uint64_t coverageCount(DegeneracyKind kind, CoverageSource source) { return cell(kind, source); }
+std::uint64_t coverageCount(DegeneracyKind kind, CoverageSource source) {
+  return cell(kind, source);
+}
 
 void CoverageGate::SetUp() {
   table() = {};
@@ -65,17 +73,20 @@ void CoverageGate::SetUp() {
 }
 
 void CoverageGate::TearDown() {
-  std::printf("\n[ coverage ] degenerate cases reached by this run (gate: each of G1-G5, D1-D4 >= %llu)\n",
-              static_cast<unsigned long long>(kMinHitsPerCase));
-  std::printf("[ coverage ] %-5s %12s %12s %12s %12s\n", "case", "local", "algorithm2", "solves", "total");
+  std::printf(
+      "\n[ coverage ] degenerate cases reached by this run (gate: each of G1-G5, D1-D4 >= %llu)\n",
+      static_cast<unsigned long long>(kMinHitsPerCase));
+  std::printf("[ coverage ] %-5s %12s %12s %12s %12s\n", "case", "local", "algorithm2", "solves",
+              "total");
   std::string missing;
   for (std::size_t k = 0; k < kNumDegeneracyKinds; ++k) {
     const auto kind = static_cast<DegeneracyKind>(k);
     const auto& row = table()[k];
     const std::uint64_t total = row[0] + row[1] + row[2];
-    std::printf("[ coverage ] %-5s %12llu %12llu %12llu %12llu%s\n", std::string(name(kind)).c_str(),
-                static_cast<unsigned long long>(row[0]), static_cast<unsigned long long>(row[1]),
-                static_cast<unsigned long long>(row[2]), static_cast<unsigned long long>(total),
+    std::printf("[ coverage ] %-5s %12llu %12llu %12llu %12llu%s\n",
+                std::string(name(kind)).c_str(), static_cast<unsigned long long>(row[0]),
+                static_cast<unsigned long long>(row[1]), static_cast<unsigned long long>(row[2]),
+                static_cast<unsigned long long>(total),
                 total < kMinHitsPerCase ? "   <-- below the gate" : "");
     if (total < kMinHitsPerCase) missing += (missing.empty() ? "" : ", ") + std::string(name(kind));
   }

@@ -112,13 +112,20 @@ inline std::vector<Fig6Branch> exactFig6Branches(const LocalWindow& w, ExactMode
     for (int i = 0; i < 8; ++i) p[i] = preds[i] == Tri::True;
     for (std::size_t j = 0; j < open.size(); ++j) p[open[j]] = (mask >> j) & 1u;
     Fig6Branch b;
-    if (p[0]) b = Fig6Branch::ZeroAreaFace;
-    else if (p[1]) b = p[2] && p[3] ? Fig6Branch::G1Inside : Fig6Branch::G1Outside;
-    else if (p[6]) b = p[4] ? Fig6Branch::G4 : Fig6Branch::G2;
-    else if (p[7]) b = p[5] ? Fig6Branch::G5 : Fig6Branch::G3;
-    else if (signB0 > 0) b = Fig6Branch::LeftOfWedge;
-    else if (signB1 < 0) b = Fig6Branch::RightOfWedge;
-    else b = Fig6Branch::InsideWedge;
+    if (p[0])
+      b = Fig6Branch::ZeroAreaFace;
+    else if (p[1])
+      b = p[2] && p[3] ? Fig6Branch::G1Inside : Fig6Branch::G1Outside;
+    else if (p[6])
+      b = p[4] ? Fig6Branch::G4 : Fig6Branch::G2;
+    else if (p[7])
+      b = p[5] ? Fig6Branch::G5 : Fig6Branch::G3;
+    else if (signB0 > 0)
+      b = Fig6Branch::LeftOfWedge;
+    else if (signB1 < 0)
+      b = Fig6Branch::RightOfWedge;
+    else
+      b = Fig6Branch::InsideWedge;
     if (std::find(leaves.begin(), leaves.end(), b) == leaves.end()) leaves.push_back(b);
   }
   std::sort(leaves.begin(), leaves.end());

@@ -15,10 +15,10 @@
 #include "coverage.h"
 #include "exact_fig6.h"
 #include "generators.h"
-#include "weighted_prop.h"
 #include "geodex/predicates.h"
 #include "geodex/propagate.h"
 #include "geodex/tolerance.h"
+#include "weighted_prop.h"
 
 namespace geodex::proptest {
 namespace {
@@ -28,7 +28,8 @@ std::string describe(const LocalPropagation& r) {
   os.precision(17);
   os << name(r.branch) << " with " << int(r.numChildren) << " children";
   for (int i = 0; i < r.numChildren; ++i)
-    os << " (e" << int(r.children[i].edge) << ": " << r.children[i].t0 << ".." << r.children[i].t1 << ")";
+    os << " (e" << int(r.children[i].edge) << ": " << r.children[i].t0 << ".." << r.children[i].t1
+       << ")";
   return os.str();
 }
 
@@ -42,7 +43,7 @@ bool contains(const std::vector<Fig6Branch>& leaves, Fig6Branch b) {
   return std::find(leaves.begin(), leaves.end(), b) != leaves.end();
 }
 
-// ===  The Fig. 6 leaf agrees with the exactly evaluated predicates =================================
+// ===  The Fig. 6 leaf agrees with the exactly evaluated predicates ===============================
 //
 // Tolerance mode: the leaf is one the tree reaches with tolerance.h's predicates evaluated
 // without rounding (several only when a predicate sits within 1% of its threshold).
@@ -57,13 +58,17 @@ GEODEX_RC_GTEST_PROP(Fig6, BranchMatchesExactlyEvaluatedPredicates, kLocalProper
 
   const auto tolerant = exactFig6Branches(c.window, ExactMode::Tolerance);
   if (!contains(tolerant, r.branch)) {
-    RC_FAIL("propagateLocal decided " + describe(r) + " but the exactly evaluated tolerance "
-            "predicates allow only " + describe(tolerant));
+    RC_FAIL("propagateLocal decided " + describe(r) +
+            " but the exactly evaluated tolerance "
+            "predicates allow only " +
+            describe(tolerant));
   }
   const auto ideal = exactFig6Branches(c.window, ExactMode::ExactSign);
   if (!contains(ideal, r.branch)) {
-    RC_FAIL("propagateLocal decided " + describe(r) + " but exact geometry (exact predicates, "
-            "ambiguous only within epsilon of a degeneracy) allows only " + describe(ideal));
+    RC_FAIL("propagateLocal decided " + describe(r) +
+            " but exact geometry (exact predicates, "
+            "ambiguous only within epsilon of a degeneracy) allows only " +
+            describe(ideal));
   }
   // An exactly degenerate lattice case is a degeneracy, whatever the tolerance: the generator's
   // target must be what exact geometry says (guards the generators themselves).
@@ -84,7 +89,7 @@ GEODEX_RC_GTEST_PROP(Fig6, BranchMatchesExactlyEvaluatedPredicates, kLocalProper
   }
 }
 
-// ===  The children cover exactly the wedge's shadow ===============================================
+// ===  The children cover exactly the wedge's shadow ==============================================
 //
 // Seen from s, the window is the angular range of the rays s→x, x in [b0, b1]; each such ray enters
 // the face through e0 and leaves it through e1 (if it passes left of the apex) or e2. The children
@@ -93,10 +98,10 @@ GEODEX_RC_GTEST_PROP(Fig6, BranchMatchesExactlyEvaluatedPredicates, kLocalProper
 // where a ray grazes an edge (a child's end parameter t does not).
 //
 // Angular slack η: a leaf taken by a tolerance may move a wedge boundary by what the tolerance
-// allows — the apex is called "on" the ray s→b0 up to a sine of kCollinearSin (seen from s, an angle
-// at most that, since b0 lies between s and the apex), and b0 is called v0 up to kCoincideRel ×
-// scale, which seen from s subtends at most that length over |s − b0|. Each wedge boundary moves at
-// most once of each kind, both ends may: factor 2. Rounding of the sample points and atan2 adds
+// allows — the apex is called "on" the ray s→b0 up to a sine of kCollinearSin (seen from s, an
+// angle at most that, since b0 lies between s and the apex), and b0 is called v0 up to kCoincideRel
+// × scale, which seen from s subtends at most that length over |s − b0|. Each wedge boundary moves
+// at most once of each kind, both ends may: factor 2. Rounding of the sample points and atan2 adds
 // a few ulps relative to scale / distance.
 double angularSlack(const LocalWindow& w) {
   const Vec2 s = w.source;
@@ -111,7 +116,8 @@ std::string shadowViolation(const LocalWindow& w, const LocalPropagation& r) {
   for (int i = 0; i < r.numChildren; ++i) {
     const LocalChild& ch = r.children[i];
     if (!(ch.edge == 1 || ch.edge == 2) || !(0.0 <= ch.t0 && ch.t0 < ch.t1 && ch.t1 <= 1.0))
-      return "child " + std::to_string(i) + " is not a proper sub-range of e1 or e2: " + describe(r);
+      return "child " + std::to_string(i) +
+             " is not a proper sub-range of e1 or e2: " + describe(r);
   }
   switch (r.branch) {
     case Fig6Branch::ZeroAreaFace:
@@ -132,7 +138,9 @@ std::string shadowViolation(const LocalWindow& w, const LocalPropagation& r) {
   const Vec2 s = w.source, v0(0.0, 0.0), v2(w.edgeLength, 0.0), v1 = w.apex;
   if (!(s.y() < 0.0)) return "not G1, yet s is on e0's line: " + describe(r);
   auto theta = [&](const Vec2& p) { return std::atan2(p.y() - s.y(), p.x() - s.x()); };
-  auto pointOn = [&](int edge, double t) { return edge == 1 ? Vec2(v0 + t * (v1 - v0)) : Vec2(v1 + t * (v2 - v1)); };
+  auto pointOn = [&](int edge, double t) {
+    return edge == 1 ? Vec2(v0 + t * (v1 - v0)) : Vec2(v1 + t * (v2 - v1));
+  };
   const double eta = angularSlack(w);
   const double hiAngle = theta(Vec2(w.b0, 0.0)), loAngle = theta(Vec2(w.b1, 0.0));
   const double apexAngle = theta(v1);
@@ -149,7 +157,8 @@ std::string shadowViolation(const LocalWindow& w, const LocalPropagation& r) {
       std::ostringstream os;
       os.precision(17);
       os << "child e" << int(ch.edge) << " at t = " << t << " (angle " << a << ")";
-      if (a < loAngle - eta || a > hiAngle + eta) return os.str() + " is outside the window's shadow: " + ctx.str();
+      if (a < loAngle - eta || a > hiAngle + eta)
+        return os.str() + " is outside the window's shadow: " + ctx.str();
       if ((ch.edge == 1 && a < apexAngle - eta) || (ch.edge == 2 && a > apexAngle + eta))
         return os.str() + " is on the wrong side of the apex: " + ctx.str();
     }
@@ -160,9 +169,11 @@ std::string shadowViolation(const LocalWindow& w, const LocalPropagation& r) {
     const double x = w.b0 + (w.b1 - w.b0) * (k + 0.5) / kRays;
     const Vec2 d = Vec2(x, 0.0) - s;
     const double a = std::atan2(d.y(), d.x());
-    if (std::abs(a - hiAngle) <= eta || std::abs(a - loAngle) <= eta || std::abs(a - apexAngle) <= eta)
+    if (std::abs(a - hiAngle) <= eta || std::abs(a - loAngle) <= eta ||
+        std::abs(a - apexAngle) <= eta)
       continue;  // within the slack of a boundary: either side is right
-    const int exitEdge = pred::cross(d, v1 - s) > 0.0 ? 2 : 1;  // apex left of the ray: leaves via e2
+    const int exitEdge =
+        pred::cross(d, v1 - s) > 0.0 ? 2 : 1;  // apex left of the ray: leaves via e2
     bool covered = false;
     for (int i = 0; i < r.numChildren && !covered; ++i) {
       const LocalChild& ch = r.children[i];
@@ -236,14 +247,18 @@ TEST(Fig6Oracles, ExactTreeAgreesWithHandWorkedCases) {
   // for exact geometry; by 2 ε: inside the wedge for both.
   const Vec2 s(0.0, -1.0), normal = Vec2(1.0, -0.5).normalized();
   const double len = std::sqrt(1.25);
-  EXPECT_EQ(only({2.0, apex, 0.5, 1.5, s + 0.5 * tol::kCollinearSin * len * normal}, ExactMode::Tolerance), "G2");
-  EXPECT_EQ(only({2.0, apex, 0.5, 1.5, s + 0.5 * tol::kCollinearSin * len * normal}, ExactMode::ExactSign),
+  EXPECT_EQ(only({2.0, apex, 0.5, 1.5, s + 0.5 * tol::kCollinearSin * len * normal},
+                 ExactMode::Tolerance),
+            "G2");
+  EXPECT_EQ(only({2.0, apex, 0.5, 1.5, s + 0.5 * tol::kCollinearSin * len * normal},
+                 ExactMode::ExactSign),
             "{G2, inside-wedge}");
-  EXPECT_EQ(only({2.0, apex, 0.5, 1.5, s + 2.0 * tol::kCollinearSin * len * normal}, ExactMode::ExactSign),
+  EXPECT_EQ(only({2.0, apex, 0.5, 1.5, s + 2.0 * tol::kCollinearSin * len * normal},
+                 ExactMode::ExactSign),
             "inside-wedge");
 }
 
-// ===  Decisions do not depend on the scale ========================================================
+// ===  Decisions do not depend on the scale =======================================================
 //
 // Scaling by a power of two scales every floating-point operation exactly, so the leaf and the
 // children's parameters must be bit-identical. Scaling by 1e-6 or 1e+6 rounds the inputs once;
@@ -252,7 +267,8 @@ GEODEX_RC_GTEST_PROP(Fig6, DecisionsAreScaleInvariant, kLocalPropertyWeight, ())
   const LocalCase c = *gen::localCase();
   RC_TAG(name(c.target), name(c.nearness));
   const bool powerOfTwo = *rc::gen::arbitrary<bool>();
-  const double factor = powerOfTwo ? std::ldexp(1.0, *gen::uniformInt(-20, 21)) : *rc::gen::element(1e-6, 1e6);
+  const double factor =
+      powerOfTwo ? std::ldexp(1.0, *gen::uniformInt(-20, 21)) : *rc::gen::element(1e-6, 1e6);
   LocalWindow scaled = c.window;
   scaled.edgeLength *= factor;
   scaled.apex *= factor;
@@ -268,7 +284,9 @@ GEODEX_RC_GTEST_PROP(Fig6, DecisionsAreScaleInvariant, kLocalPropertyWeight, ())
       same = a.children[i].edge == b.children[i].edge && a.children[i].t0 == b.children[i].t0 &&
              a.children[i].t1 == b.children[i].t1;
     }
-    if (!same) RC_FAIL("scaled by " + std::to_string(factor) + ": " + describe(a) + " became " + describe(b));
+    if (!same)
+      RC_FAIL("scaled by " + std::to_string(factor) + ": " + describe(a) + " became " +
+              describe(b));
     return;
   }
   // Rounding the scaled inputs moves the configuration by an ulp; where that changes what exact
@@ -279,8 +297,8 @@ GEODEX_RC_GTEST_PROP(Fig6, DecisionsAreScaleInvariant, kLocalPropertyWeight, ())
   const bool sameCase = before.size() == 1 && before == after;
   RC_CLASSIFY(!sameCase, "rounding moved the case");
   if (!contains(after, b.branch)) {
-    RC_FAIL("scaled by " + std::to_string(factor) + ": " + describe(b) + " but the scaled case's exact leaves are " +
-            describe(after));
+    RC_FAIL("scaled by " + std::to_string(factor) + ": " + describe(b) +
+            " but the scaled case's exact leaves are " + describe(after));
   }
   if (sameCase && a.branch != b.branch) {
     RC_FAIL("scaled by " + std::to_string(factor) + ": " + describe(a) + " became " + describe(b));

@@ -47,24 +47,24 @@
 
 namespace geodex::proptest {
 
-// ===  Shared value types ==========================================================================
+// ===  Shared value types =========================================================================
 
 /// The local configuration a generator aimed at (Fig. 4 cases and the composites).
 enum class LocalTarget : std::uint8_t {
-  Generic,     ///< no degeneracy intended: left of, right of or inside the wedge
-  ZeroArea,    ///< apex on the line of e0 (not in the paper; a zero-area face)
-  G1Inside,    ///< s on e0's line at b0, at b1 or between
-  G1Outside,   ///< s on e0's line outside [b0, b1]
-  G2,          ///< s, b0, v1 collinear, b0 ≠ v0
-  G3,          ///< s, b1, v1 collinear, b1 ≠ v2
-  G4,          ///< s, v0 = b0, v1 collinear
-  G5,          ///< s, v2 = b1, v1 collinear
-  SAtB0AtV0,   ///< composite: s = b0 = v0 (G1, G2 and G4 at once)
-  SAtB1AtV2,   ///< composite: s = b1 = v2 (G1, G3 and G5 at once)
+  Generic,    ///< no degeneracy intended: left of, right of or inside the wedge
+  ZeroArea,   ///< apex on the line of e0 (not in the paper; a zero-area face)
+  G1Inside,   ///< s on e0's line at b0, at b1 or between
+  G1Outside,  ///< s on e0's line outside [b0, b1]
+  G2,         ///< s, b0, v1 collinear, b0 ≠ v0
+  G3,         ///< s, b1, v1 collinear, b1 ≠ v2
+  G4,         ///< s, v0 = b0, v1 collinear
+  G5,         ///< s, v2 = b1, v1 collinear
+  SAtB0AtV0,  ///< composite: s = b0 = v0 (G1, G2 and G4 at once)
+  SAtB1AtV2,  ///< composite: s = b1 = v2 (G1, G3 and G5 at once)
 };
 inline constexpr std::array kAllLocalTargets{
-    LocalTarget::Generic,   LocalTarget::ZeroArea, LocalTarget::G1Inside,  LocalTarget::G1Outside,
-    LocalTarget::G2,        LocalTarget::G3,       LocalTarget::G4,        LocalTarget::G5,
+    LocalTarget::Generic,   LocalTarget::ZeroArea, LocalTarget::G1Inside, LocalTarget::G1Outside,
+    LocalTarget::G2,        LocalTarget::G3,       LocalTarget::G4,       LocalTarget::G5,
     LocalTarget::SAtB0AtV0, LocalTarget::SAtB1AtV2};
 
 inline const char* name(LocalTarget t) {
@@ -187,29 +187,32 @@ struct RigidMotion {
 
 inline void showValue(const RigidMotion& m, std::ostream& os) {
   os.precision(17);
-  os << "rotation (w, x, y, z) = (" << m.rotation.w() << ", " << m.rotation.x() << ", " << m.rotation.y()
-     << ", " << m.rotation.z() << "), translation (" << m.translation.x() << ", " << m.translation.y()
-     << ", " << m.translation.z() << ")";
+  os << "rotation (w, x, y, z) = (" << m.rotation.w() << ", " << m.rotation.x() << ", "
+     << m.rotation.y() << ", " << m.rotation.z() << "), translation (" << m.translation.x() << ", "
+     << m.translation.y() << ", " << m.translation.z() << ")";
 }
 
 /// A coplanar refinement: a face split 1→3 at an interior point, or an edge split at a point.
 struct Refinement {
   bool splitEdge = false;
-  std::size_t element = 0;            ///< the face or edge to split (the first one not carrying
-                                      ///< the source, from here on, cyclically)
+  std::size_t element = 0;              ///< the face or edge to split (the first one not carrying
+                                        ///< the source, from here on, cyclically)
   std::array<double, 3> bary{1, 1, 1};  ///< face split: weights of the corners (normalised)
-  double t = 0.5;                     ///< edge split: fraction from edge(e).vertex[0]
+  double t = 0.5;                       ///< edge split: fraction from edge(e).vertex[0]
 };
 
 inline void showValue(const Refinement& r, std::ostream& os) {
   os.precision(17);
-  if (r.splitEdge) os << "split edge " << r.element << "+ at t = " << r.t;
-  else os << "split face " << r.element << "+ 1-to-3 at weights (" << r.bary[0] << ", " << r.bary[1] << ", " << r.bary[2] << ")";
+  if (r.splitEdge)
+    os << "split edge " << r.element << "+ at t = " << r.t;
+  else
+    os << "split face " << r.element << "+ 1-to-3 at weights (" << r.bary[0] << ", " << r.bary[1]
+       << ", " << r.bary[2] << ")";
 }
 
 namespace gen {
 
-// ===  Numbers =====================================================================================
+// ===  Numbers ====================================================================================
 
 /// Uniform in [lo, hi), shrinking towards lo, whatever RapidCheck's size. (rc::gen::inRange grows
 /// its range with the size, 0 → 100 over a run, so early cases would all sit near lo: right for
@@ -249,7 +252,7 @@ inline double ulpOf(double x, double fallback) {
   return std::nextafter(a, std::numeric_limits<double>::infinity()) - a;
 }
 
-// ===  Local configurations (Fig. 3 frame) ===========================================================
+// ===  Local configurations (Fig. 3 frame) ========================================================
 
 namespace detail {
 
@@ -287,9 +290,7 @@ inline LatticeConfig latticeConfig(LocalTarget t) {
       c.b1 = c.L;
       c.b0 = *uniformInt(0, c.L);
       break;
-    default:
-      c.b0 = *uniformInt(0, c.L);
-      c.b1 = *uniformInt(c.b0 + 1, c.L + 1);
+    default: c.b0 = *uniformInt(0, c.L); c.b1 = *uniformInt(c.b0 + 1, c.L + 1);
   }
   // A ray from the point (px, 0) away from the apex, m lattice steps long: s, (px, 0), v1
   // collinear exactly.
@@ -317,8 +318,14 @@ inline LatticeConfig latticeConfig(LocalTarget t) {
     case LocalTarget::G3: awayFromApex(c.b1); break;
     case LocalTarget::G4: awayFromApex(0); break;
     case LocalTarget::G5: awayFromApex(c.L); break;
-    case LocalTarget::SAtB0AtV0: c.sx = 0; c.sy = 0; break;
-    case LocalTarget::SAtB1AtV2: c.sx = c.L; c.sy = 0; break;
+    case LocalTarget::SAtB0AtV0:
+      c.sx = 0;
+      c.sy = 0;
+      break;
+    case LocalTarget::SAtB1AtV2:
+      c.sx = c.L;
+      c.sy = 0;
+      break;
     case LocalTarget::Generic:
     case LocalTarget::ZeroArea:
       c.sx = *uniformInt(-2 * c.L, 3 * c.L + 1);
@@ -337,12 +344,24 @@ inline LocalWindow arbitraryWindow(LocalTarget t) {
   double ay = t == LocalTarget::ZeroArea ? 0.0 : L * *logUniform(0.01, 2.0);
   double b0 = 0.0, b1 = L;
   switch (t) {
-    case LocalTarget::G2: b0 = L * *uniform(0.05, 0.9); b1 = b0 + (L - b0) * *uniform(0.1, 1.0); break;
-    case LocalTarget::G3: b1 = L * *uniform(0.1, 0.95); b0 = b1 * *uniform(0.0, 0.9); break;
+    case LocalTarget::G2:
+      b0 = L * *uniform(0.05, 0.9);
+      b1 = b0 + (L - b0) * *uniform(0.1, 1.0);
+      break;
+    case LocalTarget::G3:
+      b1 = L * *uniform(0.1, 0.95);
+      b0 = b1 * *uniform(0.0, 0.9);
+      break;
     case LocalTarget::G4:
-    case LocalTarget::SAtB0AtV0: b0 = 0.0; b1 = L * *uniform(0.1, 1.0); break;
+    case LocalTarget::SAtB0AtV0:
+      b0 = 0.0;
+      b1 = L * *uniform(0.1, 1.0);
+      break;
     case LocalTarget::G5:
-    case LocalTarget::SAtB1AtV2: b1 = L; b0 = L * *uniform(0.0, 0.9); break;
+    case LocalTarget::SAtB1AtV2:
+      b1 = L;
+      b0 = L * *uniform(0.0, 0.9);
+      break;
     default: b0 = L * *uniform(0.0, 0.9); b1 = b0 + (L - b0) * *uniform(0.1, 1.0);
   }
   if (!(b1 <= L)) b1 = L;
@@ -405,7 +424,8 @@ inline int endOf(const LocalCase& c) {
     case LocalTarget::SAtB1AtV2: return 1;
     case LocalTarget::G1Inside:
     case LocalTarget::G1Outside:
-      return std::abs(c.window.source.x() - c.window.b1) < std::abs(c.window.source.x() - c.window.b0);
+      return std::abs(c.window.source.x() - c.window.b1) <
+             std::abs(c.window.source.x() - c.window.b0);
     default: return 0;
   }
 }
@@ -426,8 +446,9 @@ inline bool perturb(LocalCase& c) {
       const Vec2 along = (w.apex - b).normalized();
       const Vec2 normal(-along.y(), along.x());
       const double d = (w.source - b).norm();
-      const double delta = eps != 0.0 ? c.k * tol::kCollinearSin * d
-                                      : c.k * ulpOf(std::max(std::abs(w.source.x()), std::abs(w.source.y())), scale);
+      const double delta =
+          eps != 0.0 ? c.k * tol::kCollinearSin * d
+                     : c.k * ulpOf(std::max(std::abs(w.source.x()), std::abs(w.source.y())), scale);
       w.source += delta * normal;
       break;
     }
@@ -438,7 +459,8 @@ inline bool perturb(LocalCase& c) {
       break;
     }
     case Axis::SourceAlong: {
-      const double delta = eps != 0.0 ? c.k * tol::kCoincideRel * scale : c.k * ulpOf(w.source.x(), scale);
+      const double delta =
+          eps != 0.0 ? c.k * tol::kCoincideRel * scale : c.k * ulpOf(w.source.x(), scale);
       w.source.x() += delta;
       break;
     }
@@ -510,7 +532,7 @@ inline rc::Gen<LocalCase> localCase() {
                          [](LocalTarget t) { return localCase(t); });
 }
 
-// ===  Edge interval lists (Algorithm 2) ============================================================
+// ===  Edge interval lists (Algorithm 2) ==========================================================
 
 namespace detail {
 
@@ -527,7 +549,8 @@ inline Interval interval(double b0, double b1, Vec2 source, double sigma) {
 /// edge's own line (the windows vertices cast along their edges have y = 0).
 inline Vec2 someSource(double L) {
   const double x = L * *uniform(-1.0, 2.0);
-  const double y = *rc::gen::weightedElement<int>({{1, 0}, {6, 1}}) == 0 ? 0.0 : L * *logUniform(1e-4, 3.0);
+  const double y =
+      *rc::gen::weightedElement<int>({{1, 0}, {6, 1}}) == 0 ? 0.0 : L * *logUniform(1e-4, 3.0);
   return {x, y};
 }
 
@@ -538,7 +561,8 @@ inline double sigmaFor(double d, double x, const Vec2& source) {
 
 /// A small length relative to ε = kTinyIntervalRel × L: k × ε (k < 1) or k ulps of L.
 inline double tinyLengthFor(double L) {
-  if (*rc::gen::arbitrary<bool>()) return *rc::gen::element(0.01, 0.1, 0.5, 0.9) * tol::kTinyIntervalRel * L;
+  if (*rc::gen::arbitrary<bool>())
+    return *rc::gen::element(0.01, 0.1, 0.5, 0.9) * tol::kTinyIntervalRel * L;
   return *rc::gen::element(1.0, 4.0, 64.0, 1024.0) * ulpOf(L, L);
 }
 
@@ -546,7 +570,8 @@ inline double tinyLengthFor(double L) {
 inline std::vector<Interval> twoNeighbours(double L, double m, bool continuous) {
   const Vec2 a = someSource(L), b = someSource(L);
   const double sa = L * *uniform(0.0, 2.0);
-  const double sb = continuous ? sigmaFor(sa + std::hypot(m - a.x(), a.y()), m, b) : L * *uniform(0.0, 2.0);
+  const double sb =
+      continuous ? sigmaFor(sa + std::hypot(m - a.x(), a.y()), m, b) : L * *uniform(0.0, 2.0);
   return {interval(0.0, m, a, sa), interval(m, L, b, sb)};
 }
 
@@ -574,7 +599,8 @@ inline rc::Gen<IntervalListCase> tinyIntervalList() {
       const bool atStart = *rc::gen::arbitrary<bool>();
       const double xc = atStart ? tiny : L - tiny;
       const Interval& old = atStart ? c.inserts.front() : c.inserts.back();
-      const Vec2 s(atStart ? -L * *uniform(0.1, 2.0) : L * *uniform(1.1, 3.0), L * *logUniform(1e-3, 2.0));
+      const Vec2 s(atStart ? -L * *uniform(0.1, 2.0) : L * *uniform(1.1, 3.0),
+                   L * *logUniform(1e-3, 2.0));
       c.inserts.push_back(detail::interval(0.0, L, s, detail::sigmaFor(old.distanceAt(xc), xc, s)));
     }
     return c;
@@ -620,7 +646,8 @@ inline rc::Gen<IntervalListCase> tinyGapList() {
     } else {
       const Vec2 s = detail::someSource(L);
       const double sigma = L * *uniform(0.0, 2.0);
-      c.inserts.push_back(where == 1 ? detail::interval(gap, L, s, sigma) : detail::interval(0.0, L - gap, s, sigma));
+      c.inserts.push_back(where == 1 ? detail::interval(gap, L, s, sigma)
+                                     : detail::interval(0.0, L - gap, s, sigma));
     }
     return c;
   });
@@ -712,8 +739,10 @@ inline rc::Gen<IntervalListCase> tangentList() {
     double sigma2 = sigma1 + (1.0 - lambda) * r1;
     const int nudge = *rc::gen::element(0, 0, 1, -1, 8, -8);
     sigma2 += nudge * ulpOf(sigma2, L);
-    const Interval a = detail::interval(0.0, L, s1, sigma1), b = detail::interval(0.0, L, s2, sigma2);
-    c.inserts = *rc::gen::arbitrary<bool>() ? std::vector<Interval>{a, b} : std::vector<Interval>{b, a};
+    const Interval a = detail::interval(0.0, L, s1, sigma1),
+                   b = detail::interval(0.0, L, s2, sigma2);
+    c.inserts =
+        *rc::gen::arbitrary<bool>() ? std::vector<Interval>{a, b} : std::vector<Interval>{b, a};
     return c;
   });
 }
@@ -774,13 +803,18 @@ inline rc::Gen<IntervalListCase> intervalListCase() {
                                                    {2, randomList()}});
 }
 
-// ===  Meshes ========================================================================================
+// ===  Meshes =====================================================================================
 
 enum class MeshFamily : std::uint8_t {
-  Grid, GridAlternating, JitteredGrid, NeedleFan,  // planar, convex
-  LShape, SquareWithHole,                          // planar, non-convex, with boundary
-  QuantizedHeightField, BumpyHeightField,          // curved: saddles, flat vertices, terraces
-  FarSourcePatch,                                  // a bumpy patch and a vertex 1e4–1e7 away
+  Grid,
+  GridAlternating,
+  JitteredGrid,
+  NeedleFan,  // planar, convex
+  LShape,
+  SquareWithHole,  // planar, non-convex, with boundary
+  QuantizedHeightField,
+  BumpyHeightField,  // curved: saddles, flat vertices, terraces
+  FarSourcePatch,    // a bumpy patch and a vertex 1e4–1e7 away
 };
 
 /// A bumpy 12×12-style patch whose y = 0 side is joined by long thin triangles to a vertex `far`
@@ -823,8 +857,8 @@ inline rc::Gen<MeshCase> meshCase(MeshFamily family) {
         const bool alt = family == MeshFamily::GridAlternating;
         m.soup = verify::gridMesh(nx, ny, w, h, pattern(alt));
         m.family = alt ? "grid-alternating" : "grid";
-        m.recipe = str("gridMesh(", std::to_string(nx), ", ", std::to_string(ny), ", ", num(w), ", ",
-                       num(h), alt ? ", Alternating)" : ")");
+        m.recipe = str("gridMesh(", std::to_string(nx), ", ", std::to_string(ny), ", ", num(w),
+                       ", ", num(h), alt ? ", Alternating)" : ")");
         m.planarConvex = m.planarDomain = true;
         break;
       }
@@ -835,8 +869,9 @@ inline rc::Gen<MeshCase> meshCase(MeshFamily family) {
         const bool alt = *rc::gen::arbitrary<bool>();
         m.soup = verify::jitteredGridMesh(nx, ny, 1.0, 1.0, jitter, seed, pattern(alt));
         m.family = "jittered-grid";
-        m.recipe = str("jitteredGridMesh(", std::to_string(nx), ", ", std::to_string(ny), ", 1, 1, ",
-                       num(jitter), ", ", std::to_string(seed), alt ? ", Alternating)" : ")");
+        m.recipe =
+            str("jitteredGridMesh(", std::to_string(nx), ", ", std::to_string(ny), ", 1, 1, ",
+                num(jitter), ", ", std::to_string(seed), alt ? ", Alternating)" : ")");
         m.planarConvex = m.planarDomain = true;
         break;
       }
@@ -864,7 +899,8 @@ inline rc::Gen<MeshCase> meshCase(MeshFamily family) {
         const bool alt = *rc::gen::arbitrary<bool>();
         m.soup = verify::squareWithHoleMesh(n, 1.0, frac, pattern(alt));
         m.family = "square-with-hole";
-        m.recipe = str("squareWithHoleMesh(", std::to_string(n), ", 1, ", num(frac), alt ? ", Alternating)" : ")");
+        m.recipe = str("squareWithHoleMesh(", std::to_string(n), ", 1, ", num(frac),
+                       alt ? ", Alternating)" : ")");
         m.planarDomain = true;
         break;
       }
@@ -890,9 +926,9 @@ inline rc::Gen<MeshCase> meshCase(MeshFamily family) {
         });
         m.family = "bumpy-height-field";
         m.recipe = str("heightFieldMesh(", std::to_string(nx), ", ", std::to_string(ny), ", ",
-                       std::to_string(nx), ", ", std::to_string(ny), ", z) with z(i, j) = SplitMix64(",
-                       std::to_string(seed), ").uniform(", num(-amplitude), ", ", num(amplitude),
-                       ") in row-major vertex order");
+                       std::to_string(nx), ", ", std::to_string(ny),
+                       ", z) with z(i, j) = SplitMix64(", std::to_string(seed), ").uniform(",
+                       num(-amplitude), ", ", num(amplitude), ") in row-major vertex order");
         break;
       }
       case MeshFamily::FarSourcePatch: {
@@ -941,8 +977,10 @@ inline rc::Gen<SourceCase> sourcePoint(const Mesh& mesh) {
   for (Index v = 0; v < mesh.numVertices(); ++v) {
     if (!mesh.isReferenced(v)) continue;
     vertices.push_back(v);
-    if (mesh.isBoundaryVertex(v)) boundary.push_back(v);
-    else if (mesh.isPseudoSourceVertex(v)) saddles.push_back(v);
+    if (mesh.isBoundaryVertex(v))
+      boundary.push_back(v);
+    else if (mesh.isPseudoSourceVertex(v))
+      saddles.push_back(v);
   }
   std::vector<std::array<Index, 2>> edges;
   for (Index e = 0; e < mesh.numEdges(); ++e) edges.push_back(mesh.edge(e).vertex);
@@ -953,8 +991,10 @@ inline rc::Gen<SourceCase> sourcePoint(const Mesh& mesh) {
     if (!saddles.empty()) kinds.push_back(2);
     switch (*rc::gen::elementOf(kinds)) {
       case 0: return SourceCase{SurfacePoint::atVertex(*rc::gen::elementOf(vertices)), "vertex"};
-      case 1: return SourceCase{SurfacePoint::atVertex(*rc::gen::elementOf(boundary)), "boundary-vertex"};
-      case 2: return SourceCase{SurfacePoint::atVertex(*rc::gen::elementOf(saddles)), "saddle-vertex"};
+      case 1:
+        return SourceCase{SurfacePoint::atVertex(*rc::gen::elementOf(boundary)), "boundary-vertex"};
+      case 2:
+        return SourceCase{SurfacePoint::atVertex(*rc::gen::elementOf(saddles)), "saddle-vertex"};
       case 3: {
         const auto e = *rc::gen::elementOf(edges);
         return SourceCase{SurfacePoint::onEdge(e[0], e[1], *uniform(0.01, 0.99)), "edge"};
@@ -967,11 +1007,13 @@ inline rc::Gen<SourceCase> sourcePoint(const Mesh& mesh) {
         const Index f = *uniformInt<Index>(0, numFaces);
         const double a = *uniform(0.01, 1.0), b = *uniform(0.01, 1.0), c = *uniform(0.01, 1.0);
         const double sum = a + b + c;
-        return SourceCase{SurfacePoint::inFace(f, a / sum, b / sum, 1.0 - a / sum - b / sum), "face"};
+        return SourceCase{SurfacePoint::inFace(f, a / sum, b / sum, 1.0 - a / sum - b / sum),
+                          "face"};
       }
       default: {
         const Index f = *uniformInt<Index>(0, numFaces);
-        return SourceCase{SurfacePoint::inFace(f, 1.0 / 3, 1.0 / 3, 1.0 - 2.0 / 3), "face-centroid"};
+        return SourceCase{SurfacePoint::inFace(f, 1.0 / 3, 1.0 / 3, 1.0 - 2.0 / 3),
+                          "face-centroid"};
       }
     }
   });
@@ -984,7 +1026,8 @@ inline rc::Gen<RigidMotion> rigidMotion(double size) {
     RigidMotion m;
     Eigen::Quaterniond q(*uniform(-1, 1), *uniform(-1, 1), *uniform(-1, 1), *uniform(-1, 1));
     m.rotation = q.norm() < 1e-3 ? Eigen::Quaterniond::Identity() : q.normalized();
-    m.translation = Vec3(size * *uniform(-10, 10), size * *uniform(-10, 10), size * *uniform(-10, 10));
+    m.translation =
+        Vec3(size * *uniform(-10, 10), size * *uniform(-10, 10), size * *uniform(-10, 10));
     return m;
   });
 }

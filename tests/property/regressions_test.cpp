@@ -1,27 +1,30 @@
 // Solver bugs found by the property suite, shrunk to readable GoogleTest cases.
 //
-// !!! THESE TESTS FAIL UNTIL THE SOLVER IS FIXED (reported to the lead with the property run that
-// !!! found them; see docs/properties.md). Do not disable them: they are the definition of done.
+// !!! THE OPEN ONES FAIL UNTIL THE SOLVER IS FIXED (tests/property/CMakeLists.txt lists them in
+// !!! GEODEX_KNOWN_BUGS: CTest runs each as an expected failure; docs/properties.md: status).
+// !!! Do not disable them: they are the definition of done, and once fixed they guard the fix.
 //
-// Two families:
+// Three families:
 //
-// (A) Precision relative to the wrong length. Cases 1–3 and 5 break the end-of-run step-6
-//   invariant "every vertex's distance is the same from all its edges" (verify::InvariantChecker,
-//   full tier, 'vertex-agreement'). A window's value at a vertex v, and D(v), carry the rounding
-//   of what they were computed from — the absolute 3-D position of an edge or face source (ulp of
-//   the coordinates: case 1), positions along a 1e5–1e6 long edge at v (cases 2, 3), unfoldings
-//   across long thin triangles from a source 5e5 away (case 5) — far more than the tolerances
-//   relative to D(v) and the local edge length allow. Alone this makes D(v) too short by
-//   1e-10–1e-8 relative (case 1 at 5e6, case 3). With the vertex-distance filter of commit 582363b
-//   (GeodesicSolver::trimByVertexDistances, margin kPruneRel × (D(v) + L)) it is much worse: the
-//   window that really reaches v is trimmed short of it; v is not a pseudo-source (convex or
-//   flat), so nothing from v covers the sliver; propagation may widen it past step 4's ε (×40 in
-//   case 1); a window through a distant pseudo-source claims it, and the edge's distance function
-//   is wrong by O(edge length) there (cases 1 at 1e5, 2, 5). Those three pass without the filter.
-//   Case 6 (a coverage hole at a flat vertex of a lattice mesh scaled by 1e6) is related: rays
-//   grazing lattice lines, from pseudo-sources 1e-15 × L off them.
+// (A) Precision relative to the wrong length. Cases 1–3 and 5 break the end-of-run step-6 invariant
+//   "every vertex's distance is the same from all its edges" (verify::InvariantChecker, full tier,
+//   'vertex-agreement'). A window's value at a vertex v, and D(v), carry the rounding of what they
+//   were computed from — the absolute 3-D position of an edge or face source (ulp of the
+//   coordinates: case 1), positions along a 1e5–1e6 long edge at v (cases 2, 3), unfoldings across
+//   long thin triangles from a source 5e5 away (case 5) — far more than the tolerances relative to
+//   D(v) and the local edge length allow. Alone this makes D(v) too short by 1e-10–1e-8 relative
+//   (case 1 at 5e6, case 3). With the vertex-distance filter of commit 582363b
+//   (GeodesicSolver::trimByVertexDistances, margin kPruneRel × (D(v) + L); removed in 93bcc7e
+//   after these cases) it was much worse: the window that really reaches v is trimmed short of it;
+//   v is not a pseudo-source (convex or flat), so nothing from v covers the sliver; propagation
+//   may widen it past step 4's ε (×40 in case 1); a window through a distant pseudo-source claims
+//   it, and the edge's distance function is wrong by O(edge length) there (cases 1 at 1e5, 2, 5).
+//   Those three pass without the filter. Case 6 (a coverage hole at a flat vertex of a lattice
+//   mesh scaled by 1e6) is related: rays grazing lattice lines, from pseudo-sources 1e-15 × L off
+//   them.
 // (B) Case 7: path tracing leaves the surface (a tolerance in absolute cross-product units).
-// (C) Case 8 (Algorithm2Regression.*): Eq. 1 loses its roots and step 2 drops a better interval.
+// (C) Case 8 (Algorithm2Regression.*): Eq. 1 loses its roots and step 2 drops a better interval
+//   (fixed in f1f91c6: step 2 also samples where f − g can turn).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -67,10 +70,10 @@ void expectEdgesAgreeAtVertex(const GeodesicSolver& solver, Index v) {
 // from vertex 4. The windows seeded from an edge or face source are built from the source's
 // absolute 3-D position (ResolvedPoint::position, then windowFromPoint), rounded to the ulp of the
 // coordinates: ~1.5e-11 at 1e5, ~9e-10 at 5e6 — relative to the 0.0145 that matters here.
-//  - moved by −1e5 (with the vertex-distance filter of commit 582363b): the window across face
-//    1-5-4 onto edge 1-4 is trimmed 1.5e-11 short of vertex 4, the next one onto edge 0-4 ends
-//    6.3e-10 short, and a window from vertex 1 (σ = 1.05) fills the gap: edge 0-4 gives 2.097 at
-//    vertex 4 instead of 0.0145. (Passes once the filter is gone.)
+//  - moved by −1e5 (with the vertex-distance filter of 582363b, since removed): the window across
+//    face 1-5-4 onto edge 1-4 is trimmed 1.5e-11 short of vertex 4, the next one onto edge 0-4
+//    ends 6.3e-10 short, and a window from vertex 1 (σ = 1.05) fills the gap: edge 0-4 gives 2.097
+//    at vertex 4 instead of 0.0145. (Passes without the filter.)
 //  - moved by −5e6 (with or without the filter): every window seeded into the faces around the
 //    source puts it 1.5e-10 closer to vertex 4 than the source's own edge does, D(4) takes that
 //    value, 1.1e-8 relative too short, and edge 4-8 gives 0.0144568322948 there against
@@ -80,9 +83,8 @@ void expectEdgesAgreeAtVertex(const GeodesicSolver& solver, Index v) {
 TEST(SolverRegression, EdgeSourceNearAConvexVertexOfAMeshFarFromTheOrigin) {
   for (double shift : {0.0, -1e5, -5e6}) {
     SCOPED_TRACE("mesh moved by " + std::to_string(shift) + " along x");
-    TriangleSoup soup = verify::heightFieldMesh(2, 2, 2.0, 2.0, [](double x, double y) {
-      return x == 1.0 && y == 1.0 ? 0.3 : 0.0;
-    });
+    TriangleSoup soup = verify::heightFieldMesh(
+        2, 2, 2.0, 2.0, [](double x, double y) { return x == 1.0 && y == 1.0 ? 0.3 : 0.0; });
     for (Vec3& p : soup.positions) p.x() += shift;
     const Mesh mesh(soup);
     ASSERT_FALSE(mesh.isPseudoSourceVertex(4));
@@ -92,14 +94,14 @@ TEST(SolverRegression, EdgeSourceNearAConvexVertexOfAMeshFarFromTheOrigin) {
   }
 }
 
-// Case 2: the bumpy patch of tests/unit's D4 input (3×3 cells, seed 0) with its far vertex 16
-// 1e6 away, and the edge 2–3 between the patch and a long thin triangle split at 60%: the new vertex 17 is
-// flat (angle sum exactly 2π), not a pseudo-source. From the saddle vertex 9, D(17) is set through
-// the 1e6-long edge 16–17, whose positions are known to ulp(1e6) ≈ 1.2e-10: 2.7981934551542 where
-// the unsplit mesh gives 2.7981934551763 at the same point. The window that reaches 17 across the
-// patch (on edge 3–17, length 0.4) is then trimmed 5.3e-11 short of it, and a window from vertex 3
-// (σ = 3.07) keeps the sliver: edge 3–17 gives 3.47 at vertex 17 instead of 2.80. Without the split
-// (control) the run is clean. (Passes without the vertex-distance filter.)
+// Case 2: the bumpy patch of tests/unit's D4 input (3×3 cells, seed 0) with its far vertex 16 1e6
+// away, and the edge 2–3 between the patch and a long thin triangle split at 60%: the new vertex 17
+// is flat (angle sum exactly 2π), not a pseudo-source. From the saddle vertex 9, D(17) is set
+// through the 1e6-long edge 16–17, whose positions are known to ulp(1e6) ≈ 1.2e-10: 2.7981934551542
+// where the unsplit mesh gives 2.7981934551763 at the same point. The window that reaches 17 across
+// the patch (on edge 3–17, length 0.4) is then trimmed 5.3e-11 short of it, and a window from
+// vertex 3 (σ = 3.07) keeps the sliver: edge 3–17 gives 3.47 at vertex 17 instead of 2.80. Without
+// the split (control) the run is clean. (Passes without the vertex-distance filter.)
 TEST(SolverRegression, FlatVertexBetweenABumpyPatchAndLongThinTriangles) {
   for (bool split : {false, true}) {
     SCOPED_TRACE(split ? "edge 2-3 split at t = 0.6" : "unsplit");
@@ -129,14 +131,14 @@ TEST(SolverRegression, FlatVertexBetweenABumpyPatchAndLongThinTriangles) {
   }
 }
 
-// Case 3: the root of case 2 on its own, on a planar convex mesh where the exact distance is Euclidean:
-// a 2×2 grid of unit cells whose bottom side is joined by two long thin triangles to a vertex
-// (1, −1e6), and the bottom edge 1–2 split at t = 0.225 (vertex 10 at (1.225, 0), flat). From the
-// centre vertex 4 = (1, 1), D(10) must be |(0.225, −1)| = 1.025; the solver gives
-// 1.0249999998711659, 1.3e-10 too short, through the 1e6-long edge 10–9 whose positions near
-// vertex 10 are only known to ulp(1e6) ≈ 1.2e-10, while edge 1–10 gives 1.025 there. (Inside the
-// 1e-9 × bounding-box-diagonal contract, but the vertex-agreement invariant, and a distance shorter
-// than the straight line, say the vertex distance should not take the coarser edge's value.)
+// Case 3: the root of case 2 on its own, on a planar convex mesh where the exact distance is
+// Euclidean: a 2×2 grid of unit cells whose bottom side is joined by two long thin triangles to a
+// vertex (1, −1e6), and the bottom edge 1–2 split at t = 0.225 (vertex 10 at (1.225, 0), flat).
+// From the centre vertex 4 = (1, 1), D(10) must be |(0.225, −1)| = 1.025; the solver gives
+// 1.0249999998711659, 1.3e-10 too short, through the 1e6-long edge 10–9 whose positions near vertex
+// 10 are only known to ulp(1e6) ≈ 1.2e-10, while edge 1–10 gives 1.025 there. (Inside the 1e-9 ×
+// bounding-box-diagonal contract, but the vertex-agreement invariant, and a distance shorter than
+// the straight line, say the vertex distance should not take the coarser edge's value.)
 TEST(SolverRegression, LongThinTrianglesMakeAVertexDistanceShorterThanTheStraightLine) {
   TriangleSoup soup = verify::gridMesh(2, 2, 2.0, 2.0);
   const Index apex = static_cast<Index>(soup.positions.size());  // 9
@@ -164,15 +166,15 @@ TEST(SolverRegression, LongThinTrianglesMakeAVertexDistanceShorterThanTheStraigh
   expectEdgesAgreeAtVertex(solver, v);
 }
 
-// Case 5: the same on tests/unit's own kind of mesh, unmodified: the bumpy patch (4×4 cells,
-// seed 0) whose far vertex 25 is 1e6 away, and a source halfway along the long edge 0–25, 5e5 from the patch.
-// On edge 11–12 the window from patch vertex 1 (a boundary pseudo-source, σ = 5e5) gives
+// Case 5: the same on tests/unit's own kind of mesh, unmodified: the bumpy patch (4×4 cells, seed
+// 0) whose far vertex 25 is 1e6 away, and a source halfway along the long edge 0–25, 5e5 from the
+// patch. On edge 11–12 the window from patch vertex 1 (a boundary pseudo-source, σ = 5e5) gives
 // 500002.0273897 at vertex 11 (convex), D(11) is 500002.0273873 (from another window): 2.4e-6
-// apart, 4.8e-12 relative, 5 × kPruneRel. The filter trims the window 1.8e-6 short of vertex 11
-// and a window from vertex 17 (σ = 500003.08) keeps the gap: edge 11–12 gives D(11) + 2.47 at
-// vertex 11 (the accuracy contract allows 1e-9 × diagonal = 1e-3). Sources from 5e5 on along any
-// of the long edges do the same; at 2.5e5 (control) the run is clean. (Passes without the
-// vertex-distance filter.)
+// apart, 4.8e-12 relative, 5 × kPruneRel. The filter trims the window 1.8e-6 short of vertex 11 and
+// a window from vertex 17 (σ = 500003.08) keeps the gap: edge 11–12 gives D(11) + 2.47 at vertex 11
+// (the accuracy contract allows 1e-9 × diagonal = 1e-3). Sources from 5e5 on along any of the long
+// edges do the same; at 2.5e5 (control) the run is clean. (Passes without the vertex-distance
+// filter.)
 TEST(SolverRegression, DistantEdgeSourceLeavesAWrongSliverAtAPatchVertex) {
   const TriangleSoup soup = gen::farSourceBumpyPatch(4, 1e6, 0);
   const Mesh mesh(soup);
@@ -226,33 +228,36 @@ TEST(SolverRegression, PathFromAVertexBesideLongThinTrianglesStaysOnTheSurface) 
   ASSERT_EQ(solveAndCheck(SurfacePoint::onEdge(5, 9, 0.5), solver), "");
   const GeodesicPath path = solver.path(SurfacePoint::atVertex(1));
   const double d = solver.vertexDistances()[1];
-  EXPECT_NEAR(path.length, d, 1e-9 * mesh.boundingBoxDiagonal()) << "over " << path.points.size() << " points";
-  EXPECT_GT(path.points.size(), 2u) << "a straight chord from vertex 1 to the source is not on this surface";
+  EXPECT_NEAR(path.length, d, 1e-9 * mesh.boundingBoxDiagonal())
+      << "over " << path.points.size() << " points";
+  EXPECT_GT(path.points.size(), 2u)
+      << "a straight chord from vertex 1 to the source is not on this surface";
 }
 
-// ===  Algorithm 2 =================================================================================
+// ===  Algorithm 2 ================================================================================
 //
-// Case 8: EdgeIntervals::insert drops a new interval that is shorter only
-// on an inner part of an old one when Eq. 1 (equalDistanceCandidates) returns no candidate root.
-// With σ ≈ 4e6 × the edge length the quadratic's coefficients cancel and both roots are lost for
-// (in = near, old = far) — the same two functions with the arguments swapped give both roots,
-// 0.075 and 0.125. Step 2 then samples only the old interval's ends and middle (0, 0.5, 1), where
-// the old one is shorter everywhere, so it never bisects (no D4 repair either) and keeps the old
-// interval whole: 0.024 too long at x = 0.1 on a unit edge (the pointwise-min invariant allows
-// kPointwiseMinRel × 4e6 ≈ 5e-4), and beyond the solver's 1e-9 × diagonal accuracy contract in any mesh
-// smaller than 2.4e7. Inserting in the other order is correct (control).
+// Case 8: EdgeIntervals::insert drops a new interval that is shorter only on an inner part of an
+// old one when Eq. 1 (equalDistanceCandidates) returns no candidate root. With σ ≈ 4e6 × the edge
+// length the quadratic's coefficients cancel and both roots are lost for (in = near, old = far) —
+// the same two functions with the arguments swapped give both roots, 0.075 and 0.125. Step 2 then
+// samples only the old interval's ends and middle (0, 0.5, 1), where the old one is shorter
+// everywhere, so it never bisects (no D4 repair either) and keeps the old interval whole: 0.024 too
+// long at x = 0.1 on a unit edge (the pointwise-min invariant allows kPointwiseMinRel × 4e6 ≈
+// 5e-4), and beyond the solver's 1e-9 × diagonal accuracy contract in any mesh smaller than 2.4e7.
+// Inserting in the other order is correct (control).
 TEST(Algorithm2Regression, NearIntervalWinningInsideAFarOneIsKept) {
   constexpr double L = 1.0;
   Interval far;  // σ = 0, its source 4e6 edge lengths above x = 0
   far.b0 = 0.0;
   far.b1 = L;
   far.source = Vec2(0.0, 4e6);
-  Interval near;  // σ such that the two distances agree at x = 0.125; near is shorter on (0.075, 0.125)
+  Interval
+      near;  // σ such that the two distances agree at x = 0.125; near is shorter on (0.075, 0.125)
   near.b0 = 0.0;
   near.b1 = L;
   near.source = Vec2(0.1, 0.001);
   near.sigma = std::hypot(0.125, 4e6) - std::hypot(0.025, 0.001);  // 3999999.9749800097
-  const double expectedAt01 = near.distanceAt(0.1);                 // 3999999.97598, far gives 4e6 + 1e-9
+  const double expectedAt01 = near.distanceAt(0.1);  // 3999999.97598, far gives 4e6 + 1e-9
   for (bool farFirst : {false, true}) {
     SCOPED_TRACE(farFirst ? "far inserted first" : "near inserted first (control)");
     EdgeIntervals list;

@@ -42,7 +42,8 @@ inline constexpr const char* kFailureMeshFile = "property-failure.off";
 inline void writeOff(const TriangleSoup& soup, const std::string& path) {
   if (std::FILE* f = std::fopen(path.c_str(), "w")) {
     std::fprintf(f, "OFF\n%zu %zu 0\n", soup.positions.size(), soup.faces.size());
-    for (const Vec3& p : soup.positions) std::fprintf(f, "%.17g %.17g %.17g\n", p.x(), p.y(), p.z());
+    for (const Vec3& p : soup.positions)
+      std::fprintf(f, "%.17g %.17g %.17g\n", p.x(), p.y(), p.z());
     for (const auto& t : soup.faces) std::fprintf(f, "3 %u %u %u\n", t[0], t[1], t[2]);
     std::fclose(f);
   }
@@ -84,13 +85,15 @@ inline Solved solveChecked(const Mesh& mesh, const std::vector<SurfacePoint>& so
     std::ostringstream os;
     os.precision(17);
     writeOff(mesh.soup(), kFailureMeshFile);
-    os << v->what() << "\n  mesh written to " << (std::filesystem::current_path() / kFailureMeshFile).string()
-       << "; replay: geodex check " << kFailureMeshFile << " --level full";
+    os << v->what() << "\n  mesh written to "
+       << (std::filesystem::current_path() / kFailureMeshFile).string() << "; replay: geodex check "
+       << kFailureMeshFile << " --level full";
     for (const SurfacePoint& p : sources) os << " --source " << formatSurfacePoint(p);
     if (v->edge != kNoIndex) {
-      os << "\n  edge " << v->edge << " (length " << v->edgeLength << "), incoming from " << v->branch
-         << ": [" << v->incoming.b0 << ", " << v->incoming.b1 << "] s=(" << v->incoming.source.x()
-         << ", " << v->incoming.source.y() << ") sigma=" << v->incoming.sigma;
+      os << "\n  edge " << v->edge << " (length " << v->edgeLength << "), incoming from "
+         << v->branch << ": [" << v->incoming.b0 << ", " << v->incoming.b1 << "] s=("
+         << v->incoming.source.x() << ", " << v->incoming.source.y()
+         << ") sigma=" << v->incoming.sigma;
     }
     RC_FAIL(os.str());
   }

@@ -19,22 +19,24 @@
 namespace geodex::proptest {
 namespace {
 
-std::string mismatch(const char* what, std::span<const double> got, std::span<const double> want, double diagonal) {
+std::string mismatch(const char* what, std::span<const double> got, std::span<const double> want,
+                     double diagonal) {
   const std::size_t v = worstIndex(got, want);
   std::ostringstream os;
   os.precision(17);
-  os << what << ": distances differ by " << std::abs(got[v] - want[v]) / diagonal << " x diagonal at vertex " << v
-     << " (" << got[v] << " vs " << want[v] << ")";
+  os << what << ": distances differ by " << std::abs(got[v] - want[v]) / diagonal
+     << " x diagonal at vertex " << v << " (" << got[v] << " vs " << want[v] << ")";
   return os.str();
 }
 
-// ===  Symmetry =====================================================================================
+// ===  Symmetry ===================================================================================
 
 RC_GTEST_PROP(Metamorphic, DistanceIsSymmetricBetweenVertices, ()) {
   const MeshCase mc = *gen::meshCase();
   const Mesh mesh(mc.soup);
   const Index a = *gen::referencedVertex(mesh), b = *gen::referencedVertex(mesh);
-  RC_TAG(mc.family, mesh.isBoundaryVertex(a) || mesh.isBoundaryVertex(b) ? "boundary vertex" : "interior vertices");
+  RC_TAG(mc.family, mesh.isBoundaryVertex(a) || mesh.isBoundaryVertex(b) ? "boundary vertex"
+                                                                         : "interior vertices");
   const double ab = solveChecked(mesh, {SurfacePoint::atVertex(a)}).distances[b];
   const double ba = solveChecked(mesh, {SurfacePoint::atVertex(b)}).distances[a];
   recordAccuracy("symmetry d(a,b) vs d(b,a)", std::abs(ab - ba) / mesh.boundingBoxDiagonal());
@@ -46,7 +48,7 @@ RC_GTEST_PROP(Metamorphic, DistanceIsSymmetricBetweenVertices, ()) {
   }
 }
 
-// ===  Rigid motion ================================================================================
+// ===  Rigid motion ===============================================================================
 
 RC_GTEST_PROP(Metamorphic, RigidMotionsLeaveDistancesUnchanged, ()) {
   const MeshCase mc = *gen::meshCase();
@@ -65,7 +67,7 @@ RC_GTEST_PROP(Metamorphic, RigidMotionsLeaveDistancesUnchanged, ()) {
     RC_FAIL(mismatch("after a rigid motion", after.distances, before.distances, diag));
 }
 
-// ===  Uniform scaling =============================================================================
+// ===  Uniform scaling ============================================================================
 //
 // Every tolerance is relative (tolerance.h), so scaling must give proportional distances and take
 // the same decisions:
@@ -116,8 +118,8 @@ RC_GTEST_PROP(Metamorphic, UniformScalingScalesDistancesAndKeepsDecisions, ()) {
     if (!(maxDifference(s.distances, base.distances) <= kTwoSolves * diag))
       RC_FAIL(mismatch(by.c_str(), s.distances, base.distances, diag));
     if (exact && s.counters.count != base.counters.count) {
-      RC_FAIL(by + " (exactly) the degeneracy counts changed: " + describeCounters(base.counters) + " became " +
-              describeCounters(s.counters));
+      RC_FAIL(by + " (exactly) the degeneracy counts changed: " + describeCounters(base.counters) +
+              " became " + describeCounters(s.counters));
     }
     if (exact) continue;
     for (const auto& [w, branch] : recorded.cases) {
@@ -126,14 +128,15 @@ RC_GTEST_PROP(Metamorphic, UniformScalingScalesDistancesAndKeepsDecisions, ()) {
       if (got == branch) continue;
       // Rounding the scaled inputs may have moved the case itself (a needle's apex 1e-16 from v2
       // becomes exactly v2): the leaf must then follow exact geometry, not the unscaled leaf.
-      const auto before = exactFig6Branches(w, ExactMode::Tolerance), after = exactFig6Branches(sw, ExactMode::Tolerance);
+      const auto before = exactFig6Branches(w, ExactMode::Tolerance),
+                 after = exactFig6Branches(sw, ExactMode::Tolerance);
       if (before.size() == 1 && before == after) {
         std::ostringstream os;
         os.precision(17);
         os << by << ", a case of this solve went from " << name(branch) << " to " << name(got)
-           << " though exact predicates decide both as " << name(before[0]) << ": LocalWindow{" << w.edgeLength
-           << ", Vec2(" << w.apex.x() << ", " << w.apex.y() << "), " << w.b0 << ", " << w.b1 << ", Vec2("
-           << w.source.x() << ", " << w.source.y() << ")}";
+           << " though exact predicates decide both as " << name(before[0]) << ": LocalWindow{"
+           << w.edgeLength << ", Vec2(" << w.apex.x() << ", " << w.apex.y() << "), " << w.b0 << ", "
+           << w.b1 << ", Vec2(" << w.source.x() << ", " << w.source.y() << ")}";
         RC_FAIL(os.str());
       }
     }
@@ -146,7 +149,8 @@ std::vector<Index> shuffled(std::size_t n, std::uint64_t seed) {
   std::vector<Index> p(n);
   std::iota(p.begin(), p.end(), Index{0});
   verify::SplitMix64 rng(seed);
-  for (std::size_t i = n; i > 1; --i) std::swap(p[i - 1], p[static_cast<std::size_t>(rng.uniform() * i)]);
+  for (std::size_t i = n; i > 1; --i)
+    std::swap(p[i - 1], p[static_cast<std::size_t>(rng.uniform() * i)]);
   return p;
 }
 
@@ -202,7 +206,7 @@ RC_GTEST_PROP(Metamorphic, RelabellingVerticesAndReorderingFacesLeaveDistancesUn
     RC_FAIL(mismatch("after relabelling (original vertex numbers)", back, before.distances, diag));
 }
 
-// ===  Coplanar refinement =========================================================================
+// ===  Coplanar refinement ========================================================================
 //
 // Splitting a face 1→3 at an interior point, or an edge (and its one or two faces) at a point
 // along it, leaves the surface the same point set: the distances at the original vertices must
@@ -211,15 +215,16 @@ RC_GTEST_PROP(Metamorphic, RelabellingVerticesAndReorderingFacesLeaveDistancesUn
 /// The refined soup, and the source to use on both meshes: the refined face or edge is the first
 /// one from r.element on (cyclically) that the source is not given on (its index would change);
 /// when there is none, the source moves to a vertex.
-std::pair<TriangleSoup, SurfacePoint> refine(const TriangleSoup& soup, const Mesh& mesh, const Refinement& r,
-                                             SurfacePoint source) {
+std::pair<TriangleSoup, SurfacePoint> refine(const TriangleSoup& soup, const Mesh& mesh,
+                                             const Refinement& r, SurfacePoint source) {
   auto touches = [&](std::size_t i) {
     if (!r.splitEdge) return source.kind == SurfacePoint::Kind::Face && source.face == i;
     const Edge& E = mesh.edge(static_cast<Index>(i));
     if (source.kind == SurfacePoint::Kind::Edge)
       return (E.vertex[0] == source.vertex && E.vertex[1] == source.toVertex) ||
              (E.vertex[1] == source.vertex && E.vertex[0] == source.toVertex);
-    if (source.kind == SurfacePoint::Kind::Face) return mesh.localEdgeIndex(source.face, static_cast<Index>(i)) >= 0;
+    if (source.kind == SurfacePoint::Kind::Face)
+      return mesh.localEdgeIndex(source.face, static_cast<Index>(i)) >= 0;
     return false;
   };
   const std::size_t count = r.splitEdge ? mesh.numEdges() : mesh.numFaces();
@@ -235,14 +240,17 @@ std::pair<TriangleSoup, SurfacePoint> refine(const TriangleSoup& soup, const Mes
   if (!r.splitEdge) {
     const auto corners = soup.faces[chosen];
     const double sum = r.bary[0] + r.bary[1] + r.bary[2];
-    refined.positions.push_back((r.bary[0] * soup.positions[corners[0]] + r.bary[1] * soup.positions[corners[1]] +
-                                 r.bary[2] * soup.positions[corners[2]]) / sum);
+    refined.positions.push_back((r.bary[0] * soup.positions[corners[0]] +
+                                 r.bary[1] * soup.positions[corners[1]] +
+                                 r.bary[2] * soup.positions[corners[2]]) /
+                                sum);
     refined.faces[chosen] = {corners[0], corners[1], p};
     refined.faces.push_back({corners[1], corners[2], p});
     refined.faces.push_back({corners[2], corners[0], p});
   } else {
     const Edge& E = mesh.edge(static_cast<Index>(chosen));
-    refined.positions.push_back((1.0 - r.t) * soup.positions[E.vertex[0]] + r.t * soup.positions[E.vertex[1]]);
+    refined.positions.push_back((1.0 - r.t) * soup.positions[E.vertex[0]] +
+                                r.t * soup.positions[E.vertex[1]]);
     const std::size_t nf = refined.faces.size();
     for (std::size_t f = 0; f < nf; ++f) {
       const auto c = refined.faces[f];
@@ -276,7 +284,7 @@ RC_GTEST_PROP(Metamorphic, CoplanarRefinementLeavesDistancesUnchanged, ()) {
     RC_FAIL(mismatch("after refining", original, before.distances, diag));
 }
 
-// ===  More sources ================================================================================
+// ===  More sources ===============================================================================
 //
 // Adding a source never increases a distance; in fact the field is the minimum over the sources.
 RC_GTEST_PROP(Metamorphic, AddingASourceNeverIncreasesADistance, ()) {

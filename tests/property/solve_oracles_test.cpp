@@ -30,13 +30,15 @@ RC_GTEST_PROP(WholeSolve, PlanarConvexMeshesGiveEuclideanDistances, ()) {
   const SourceCase src = *gen::sourcePoint(mesh);
   RC_TAG(mc.family, src.kind);
   const Solved s = solveChecked(mesh, {src.point});
-  const auto euclid = verify::euclideanDistances(mc.soup.positions, verify::surfacePointPosition(mc.soup, src.point));
+  const auto euclid = verify::euclideanDistances(mc.soup.positions,
+                                                 verify::surfacePointPosition(mc.soup, src.point));
   const double err = maxDifference(s.distances, euclid);
   recordAccuracy("planar convex vs Euclidean", err / mesh.boundingBoxDiagonal());
   if (!(err <= kAccuracy * mesh.boundingBoxDiagonal())) {
     const std::size_t v = worstIndex(s.distances, euclid);
-    RC_FAIL("scaled by " + std::to_string(scale) + ": error " + std::to_string(err / mesh.boundingBoxDiagonal()) +
-            " x diagonal" + at(v, s.distances[v], euclid[v]));
+    RC_FAIL("scaled by " + std::to_string(scale) + ": error " +
+            std::to_string(err / mesh.boundingBoxDiagonal()) + " x diagonal" +
+            at(v, s.distances[v], euclid[v]));
   }
 }
 
@@ -47,13 +49,15 @@ RC_GTEST_PROP(WholeSolve, PlanarDomainsWithBoundaryMatchTheVisibilityGraph, ()) 
   RC_TAG(mc.family, src.kind);
   const Solved s = solveChecked(mesh, {src.point});
   const Vec3 p = verify::surfacePointPosition(mc.soup, src.point);
-  const auto exact = verify::planarDomainDistances(verify::planarBoundaryPolygons(mc.soup), Vec2(p.x(), p.y()),
-                                                   verify::planarPositions(mc.soup));
+  const auto exact =
+      verify::planarDomainDistances(verify::planarBoundaryPolygons(mc.soup), Vec2(p.x(), p.y()),
+                                    verify::planarPositions(mc.soup));
   const double err = maxDifference(s.distances, exact);
   recordAccuracy("planar domain vs visibility graph", err / mesh.boundingBoxDiagonal());
   if (!(err <= kAccuracy * mesh.boundingBoxDiagonal())) {
     const std::size_t v = worstIndex(s.distances, exact);
-    RC_FAIL("error " + std::to_string(err / mesh.boundingBoxDiagonal()) + " x diagonal" + at(v, s.distances[v], exact[v]));
+    RC_FAIL("error " + std::to_string(err / mesh.boundingBoxDiagonal()) + " x diagonal" +
+            at(v, s.distances[v], exact[v]));
   }
 }
 
@@ -65,7 +69,8 @@ RC_GTEST_PROP(WholeSolve, DistancesLieBetweenEuclideanAndEdgeGraphAndAreLipschit
   const SourceCase src = *gen::sourcePoint(mesh);
   RC_TAG(mc.family, src.kind);
   const Solved s = solveChecked(mesh, {src.point});
-  const auto euclid = verify::euclideanDistances(mc.soup.positions, verify::surfacePointPosition(mc.soup, src.point));
+  const auto euclid = verify::euclideanDistances(mc.soup.positions,
+                                                 verify::surfacePointPosition(mc.soup, src.point));
   const auto graph = verify::edgeGraphDijkstra(mesh, std::vector<SurfacePoint>{src.point});
   const auto lower = verify::checkEuclideanLowerBound(s.distances, euclid, kAccuracy);
   if (!lower.ok()) RC_FAIL("below the Euclidean distance: " + lower.summary());
@@ -90,15 +95,19 @@ RC_GTEST_PROP(WholeSolve, PathLengthEqualsDistance, ()) {
   const GeodesicPath path = solver.path(target.point);
   std::ostringstream ctx;
   ctx.precision(17);
-  ctx << "source " << formatSurfacePoint(src.point) << ", target " << formatSurfacePoint(target.point)
-      << ": distance " << d << ", path length " << path.length << " over " << path.points.size() << " points";
+  ctx << "source " << formatSurfacePoint(src.point) << ", target "
+      << formatSurfacePoint(target.point) << ": distance " << d << ", path length " << path.length
+      << " over " << path.points.size() << " points";
   if (path.points.empty()) RC_FAIL("no path: " + ctx.str());
   const Vec3 from = verify::surfacePointPosition(mc.soup, target.point);
   const Vec3 to = verify::surfacePointPosition(mc.soup, src.point);
-  if (!((path.points.front().position - from).norm() <= tol)) RC_FAIL("the path does not start at the target: " + ctx.str());
-  if (!((path.points.back().position - to).norm() <= tol)) RC_FAIL("the path does not end at the source: " + ctx.str());
+  if (!((path.points.front().position - from).norm() <= tol))
+    RC_FAIL("the path does not start at the target: " + ctx.str());
+  if (!((path.points.back().position - to).norm() <= tol))
+    RC_FAIL("the path does not end at the source: " + ctx.str());
   recordAccuracy("path length vs distance", std::abs(path.length - d) / mesh.boundingBoxDiagonal());
-  if (!(std::abs(path.length - d) <= tol)) RC_FAIL("path length differs from the distance: " + ctx.str());
+  if (!(std::abs(path.length - d) <= tol))
+    RC_FAIL("path length differs from the distance: " + ctx.str());
 }
 
 }  // namespace

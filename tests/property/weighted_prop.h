@@ -25,7 +25,8 @@ void checkGTestWeighted(Testable&& testable, int weight) {
   metadata.description = std::string(info->name());
   rc::detail::TestParams params = rc::detail::configuration().testParams;
   params.maxSuccess *= weight;
-  const auto result = rc::detail::checkProperty(rc::detail::toProperty(std::forward<Testable>(testable)), metadata, params);
+  const auto result = rc::detail::checkProperty(
+      rc::detail::toProperty(std::forward<Testable>(testable)), metadata, params);
   if (result.template is<rc::detail::SuccessResult>()) {
     const auto success = result.template get<rc::detail::SuccessResult>();
     if (!success.distribution.empty()) {
@@ -41,9 +42,9 @@ void checkGTestWeighted(Testable&& testable, int weight) {
 
 }  // namespace geodex::proptest
 
-#define GEODEX_RC_GTEST_PROP(TestCase, Name, Weight, ArgList)                                  \
+#define GEODEX_RC_GTEST_PROP(TestCase, Name, Weight, ArgList)                                   \
   void rapidCheck_propImpl_##TestCase##_##Name ArgList;                                         \
-  TEST(TestCase, Name) {                                                                         \
+  TEST(TestCase, Name) {                                                                        \
     ::geodex::proptest::checkGTestWeighted(&rapidCheck_propImpl_##TestCase##_##Name, (Weight)); \
-  }                                                                                              \
+  }                                                                                             \
   void rapidCheck_propImpl_##TestCase##_##Name ArgList
