@@ -20,8 +20,8 @@
 //   may widen it past step 4's ε (×40 in case 1); a window through a distant pseudo-source claims
 //   it, and the edge's distance function is wrong by O(edge length) there (cases 1 at 1e5, 2, 5).
 //   Those three pass without the filter. Case 6 (a coverage hole at a flat vertex of a lattice
-//   mesh scaled by 1e6) is related: rays grazing lattice lines, from pseudo-sources 1e-15 × L off
-//   them.
+//   mesh scaled by 1e6) and case 9 (a shadow at a flat vertex of a barely jittered planar grid,
+//   wider than step 4 sews) are related: rays grazing a flat vertex just outside kCollinearSin.
 // (B) Case 7: path tracing leaves the surface (a tolerance in absolute cross-product units).
 // (C) Case 8 (Algorithm2Regression.*): Eq. 1 loses its roots and step 2 drops a better interval
 //   (fixed in f1f91c6: step 2 also samples where f − g can turn).
@@ -232,6 +232,29 @@ TEST(SolverRegression, PathFromAVertexBesideLongThinTrianglesStaysOnTheSurface) 
       << "over " << path.points.size() << " points";
   EXPECT_GT(path.points.size(), 2u)
       << "a straight chord from vertex 1 to the source is not on this surface";
+}
+
+// Case 9: a shadow at a flat vertex wider than step 4 sews, on a planar convex mesh. A 2×2 grid
+// whose centre vertex 4 is jittered by < 1e-11 (jitteredGridMesh(2, 2, 1, 1, 1e-11, 0): 4 moves
+// by (3.8e-12, −6.8e-13); a planar interior vertex, flat, not a pseudo-source), a source at the
+// midpoint of edge 4–7, 0.25 above vertex 4. Propagated across face 1-5-4, the window on edge 4–5
+// sees the source, vertex 4 and the apex 1 at a sine of 1.5e-11 — just above kCollinearSin — and
+// takes the generic left-of-wedge leaf: edge 1–5 from 1.1e-11 on, nothing on edge 1–4. The wedge
+// left between this window and those passing vertex 4 on its other side is ~1e-11 rad wide, 10 ×
+// the kFlatVertexAngle step 4 sews (tolerance.h: "a flat vertex can leave a shadow wedge of at most
+// this angle"); edge 1–4 lies within 1e-11 of the line through the source and vertex 4, so along
+// it the wedge is 3.6e-6 long. Nothing covers that but a window from the boundary vertex 5
+// (σ = 0.559): edge 1–4 gives 1.059 at vertex 4, whose distance is 0.25. (Distance queries are
+// rescued by D(4) + |4x|.) Without jitter (control) the run is clean.
+TEST(SolverRegression, JitteredFlatVertexLeavesAShadowWiderThanStep4Sews) {
+  for (double jitter : {0.0, 1e-11}) {
+    SCOPED_TRACE(jitter == 0.0 ? "no jitter" : "jitter 1e-11");
+    const Mesh mesh(verify::jitteredGridMesh(2, 2, 1.0, 1.0, jitter, 0));
+    ASSERT_FALSE(mesh.isPseudoSourceVertex(4));
+    GeodesicSolver solver(mesh);
+    EXPECT_EQ(solveAndCheck(SurfacePoint::onEdge(4, 7, 0.5), solver), "");
+    expectEdgesAgreeAtVertex(solver, 4);
+  }
 }
 
 // ===  Algorithm 2 ================================================================================
