@@ -68,8 +68,11 @@ struct Options {
   std::string jsonPath;
   int runs = 3;        ///< timed geodex / Dijkstra / tier runs per mesh (median)
   int cgalRuns = 3;    ///< timed CGAL runs per mesh (median)
-  int hookRuns = 7;    ///< interleaved (none, no-op observer) pairs per mesh, at most...
-  double hookBudgetSeconds = 30;  ///< ...while they take less than this (at least 3 pairs)
+  /// Interleaved (none, no-op observer) pairs per mesh: at least 3, then more until they have
+  /// taken hookBudgetSeconds or there are hookMaxPairs. Small meshes get many pairs, so an
+  /// overhead of a few percent stands out of the noise.
+  int hookMaxPairs = 200;
+  double hookBudgetSeconds = 10;
   /// The full tier samples every edge update against the list before it: on meshes with many
   /// intervals per edge it costs minutes. Above this many faces it is skipped.
   std::size_t fullTierMaxFaces = 25000;
@@ -86,8 +89,9 @@ void usage() {
       "  --json FILE            also write every figure as JSON\n"
       "  --runs N               timed geodex/Dijkstra/tier runs per mesh, median (default 3)\n"
       "  --cgal-runs N          timed CGAL runs per mesh, median (default 3)\n"
-      "  --hook-runs N          interleaved none/no-op-observer pairs per mesh (default 7)\n"
-      "  --hook-budget S        ...but no new pair after S seconds, once 3 are done (default 30)\n"
+      "  --hook-budget S        interleaved none/no-op-observer pairs per mesh: at least 3,\n"
+      "                         more until S seconds have passed (default 10)...\n"
+      "  --hook-max-pairs N     ...or there are N pairs (default 200)\n"
       "  --full-tier-max-faces N  skip the full invariant tier above N faces (default 25000)\n"
       "  --only A,B,...         run only these cases (see --list)\n"
       "  --list                 list the cases and exit\n"
@@ -311,6 +315,7 @@ struct Result {
   double dijkstraSeconds = kNaN;
   // hooks and tiers
   Timing noneRuns, noopRuns, cheapRuns, fullRuns;
+  double noopRatioQ1 = kNaN, noopRatioQ3 = kNaN;  ///< quartiles of the pairwise ratios
   double noneSeconds = kNaN, noopSeconds = kNaN, cheapSeconds = kNaN, fullSeconds = kNaN;
   std::uint64_t cheapViolations = 0, fullViolations = 0;
   std::string firstViolation;
@@ -439,13 +444,19 @@ void runCase(const Case& c, const Options& options, Result& r) {
   if (options.tiers) {
     NoopObserver noop;
     const auto t0 = Clock::now();
-    for (int i = 0; i < options.hookRuns; ++i) {  // interleaved, so drift hits both alike
+    for (int i = 0; i < options.hookMaxPairs; ++i) {  // interleaved: drift hits both alike
       if (i >= 3 && secondsSince(t0) > options.hookBudgetSeconds) break;
       timeSolve(mesh, sources, nullptr, r.noneRuns);
       timeSolve(mesh, sources, &noop, r.noopRuns);
     }
     r.noneSeconds = median(r.noneRuns.cpu);
     r.noopSeconds = median(r.noopRuns.cpu);
+    std::vector<double> ratios;
+    for (std::size_t i = 0; i < r.noneRuns.cpu.size(); ++i)
+      ratios.push_back(r.noopRuns.cpu[i] / r.noneRuns.cpu[i]);
+    std::sort(ratios.begin(), ratios.end());
+    r.noopRatioQ1 = ratios[ratios.size() / 4];
+    r.noopRatioQ3 = ratios[(3 * ratios.size()) / 4];
     auto tier = [&](verify::CheckLevel level, std::uint64_t& violations, Timing& runs) {
       for (int i = 0; i < options.runs; ++i) {
         verify::InvariantChecker checker(level, /*throwOnViolation=*/false);
@@ -559,18 +570,20 @@ void printMarkdown(const std::vector<Result>& results, const Options& options,
   }
   if (!options.tiers) return;
   out << "\nHooks and verify tiers: solve time with an observer attached, relative to none. "
-         "None and no-op are run as interleaved pairs (up to "
-      << options.hookRuns << ", no new pair after " << fixed(options.hookBudgetSeconds, 0)
-      << " s once 3 are done), medians compared; tiers: median of " << options.runs
+         "None and no-op are run as interleaved pairs (at least 3, more for up to "
+      << fixed(options.hookBudgetSeconds, 0) << " s, at most " << options.hookMaxPairs
+      << "), medians compared; [q1, q3]: quartiles of the pairwise no-op/none ratios, a "
+         "measure of the noise. Tiers: median of " << options.runs
       << ". The full tier runs only up to " << thousands(options.fullTierMaxFaces)
       << " faces.\n\n";
-  out << "| mesh | pairs | none ms | no-op observer | cheap tier | full tier | violations (cheap / full) |\n";
-  out << "|---|--:|--:|--:|--:|--:|--:|\n";
+  out << "| mesh | pairs | none ms | no-op observer | [q1, q3] | cheap tier | full tier | violations (cheap / full) |\n";
+  out << "|---|--:|--:|--:|--:|--:|--:|--:|\n";
   for (const Result& r : results) {
     if (r.skipped) continue;
     auto ratio = [&](double t) { return std::isnan(t) ? std::string("–") : fixed(t / r.noneSeconds, 3) + "×"; };
     out << "| " << r.name << " | " << r.noneRuns.cpu.size() << " | " << milliseconds(r.noneSeconds)
-        << " | " << ratio(r.noopSeconds)
+        << " | " << ratio(r.noopSeconds) << " | [" << fixed(r.noopRatioQ1, 3) << ", "
+        << fixed(r.noopRatioQ3, 3) << "]"
         << " | " << ratio(r.cheapSeconds) << " | "
         << (std::isnan(r.fullSeconds) ? "skipped" : ratio(r.fullSeconds)) << " | "
         << r.cheapViolations << " / "
@@ -623,7 +636,8 @@ void writeJson(const std::vector<Result>& results, const Options& options, const
       << ", \"load_after\": " << jsonString(info.loadAfter) << "},\n"
       << "  \"total_seconds\": " << jsonNumber(info.seconds) << ",\n"
       << "  \"runs\": " << options.runs << ", \"cgal_runs\": " << options.cgalRuns
-      << ", \"hook_runs\": " << options.hookRuns
+      << ", \"hook_budget_seconds\": " << options.hookBudgetSeconds
+      << ", \"hook_max_pairs\": " << options.hookMaxPairs
       << ", \"full_tier_max_faces\": " << options.fullTierMaxFaces << ",\n"
       << "  \"timed\": {\"clock\": \"*_seconds: median thread CPU time "
          "(CLOCK_THREAD_CPUTIME_ID); *_runs: cpu and wall (steady_clock) per run\", "
@@ -667,6 +681,8 @@ void writeJson(const std::vector<Result>& results, const Options& options, const
           << ", \"cheap_tier_runs\": " << jsonTiming(r.cheapRuns)
           << ", \"full_tier_runs\": " << jsonTiming(r.fullRuns)
           << ", \"noop_observer_ratio\": " << jsonNumber(r.noopSeconds / r.noneSeconds)
+          << ", \"noop_pair_ratio_quartiles\": [" << jsonNumber(r.noopRatioQ1) << ", "
+          << jsonNumber(r.noopRatioQ3) << "]"
           << ", \"cheap_tier_ratio\": " << jsonNumber(r.cheapSeconds / r.noneSeconds)
           << ", \"full_tier_ratio\": " << jsonNumber(r.fullSeconds / r.noneSeconds)
           << ", \"cheap_violations\": " << r.cheapViolations
@@ -703,7 +719,7 @@ int main(int argc, char** argv) {
     if (arg == "--json") options.jsonPath = value();
     else if (arg == "--runs") options.runs = std::max(1, std::stoi(value()));
     else if (arg == "--cgal-runs") options.cgalRuns = std::max(1, std::stoi(value()));
-    else if (arg == "--hook-runs") options.hookRuns = std::max(1, std::stoi(value()));
+    else if (arg == "--hook-max-pairs") options.hookMaxPairs = std::max(3, std::stoi(value()));
     else if (arg == "--hook-budget") options.hookBudgetSeconds = std::stod(value());
     else if (arg == "--full-tier-max-faces") options.fullTierMaxFaces = std::stoul(value());
     else if (arg == "--only") options.only = splitList(value());
