@@ -11,18 +11,15 @@
 namespace geodex {
 namespace {
 
-// The window an edge gets from a source point P lying in the plane of face f (P inside f or on
-// its boundary): the whole edge, with P expressed in the edge's frame on f's side.
-Interval windowFromPoint(const Mesh& mesh, Index f, Index e, const Vec3& P, double sigma,
+// The window edge e gets from a source point p of face f (inside f or on its boundary): the whole
+// edge, with p unfolded into e's frame on f's side (pointInFaceFrame: from local lengths only).
+Interval windowFromPoint(const Mesh& mesh, Index f, Index e, const ResolvedPoint& p, double sigma,
                          std::int32_t origin) {
-  const Edge& E = mesh.edge(e);
-  const Vec3 o = mesh.position(E.vertex[0]);
-  const Vec3 dir = (mesh.position(E.vertex[1]) - o) / E.length;
-  const Vec3 rel = P - o;
+  const Vec2 q = pointInFaceFrame(mesh, p, f, e);
   Interval w;
   w.b0 = 0.0;
-  w.b1 = E.length;
-  w.source = Vec2(rel.dot(dir), rel.cross(dir).norm());
+  w.b1 = mesh.edge(e).length;
+  w.source = Vec2(q.x(), std::max(0.0, q.y()));
   w.sigma = sigma;
   w.side = static_cast<std::uint8_t>(mesh.sideOf(e, f));
   w.origin = origin;
@@ -116,7 +113,7 @@ void GeodesicSolver::seedSource(const ResolvedPoint& p, std::size_t number) {
         if (f == kNoIndex) continue;
         for (Index e : mesh_.faceEdges(f)) {
           if (e == p.element) continue;
-          Interval w = windowFromPoint(mesh_, f, e, p.position, 0.0, origin);
+          Interval w = windowFromPoint(mesh_, f, e, p, 0.0, origin);
           w.id = ids_();
           if (mesh_.edge(e).face[1 - w.side] == kNoIndex) w.markPropagated();
           addInterval(e, w, nullptr);
@@ -126,7 +123,7 @@ void GeodesicSolver::seedSource(const ResolvedPoint& p, std::size_t number) {
     }
     case SurfacePoint::Kind::Face:
       for (Index e : mesh_.faceEdges(p.element)) {
-        Interval w = windowFromPoint(mesh_, p.element, e, p.position, 0.0, origin);
+        Interval w = windowFromPoint(mesh_, p.element, e, p, 0.0, origin);
         w.id = ids_();
         if (mesh_.edge(e).face[1 - w.side] == kNoIndex) w.markPropagated();
         addInterval(e, w, nullptr);
@@ -309,13 +306,22 @@ double GeodesicSolver::resolvedDistance(const ResolvedPoint& p) const {
     }
     case SurfacePoint::Kind::Face: {
       const Index f = p.element;
-      for (Index v : mesh_.face(f)) best = std::min(best, vertexDistance_[v] + (mesh_.position(v) - p.position).norm());
+      {  // the corners of f, and a source in f or on one of its edges, are seen straight
+        const Index e = mesh_.faceEdges(f)[0];
+        const Vec2 q = pointInFaceFrame(mesh_, p, f, e);
+        for (Index v : mesh_.face(f)) {
+          const ResolvedPoint corner{SurfacePoint::Kind::Vertex, v, 0.0, {}, mesh_.position(v)};
+          best = std::min(best, vertexDistance_[v] + (pointInFaceFrame(mesh_, corner, f, e) - q).norm());
+        }
+        for (const ResolvedPoint& src : sources_) {
+          const bool touches =
+              (src.kind == SurfacePoint::Kind::Face && src.element == f) ||
+              (src.kind == SurfacePoint::Kind::Edge && mesh_.localEdgeIndex(f, src.element) >= 0);
+          if (touches) best = std::min(best, (pointInFaceFrame(mesh_, src, f, e) - q).norm());
+        }
+      }
       for (Index e : mesh_.faceEdges(f)) {
-        const Edge& E = mesh_.edge(e);
-        const Vec3 o = mesh_.position(E.vertex[0]);
-        const Vec3 dir = (mesh_.position(E.vertex[1]) - o) / E.length;
-        const Vec3 rel = p.position - o;
-        const Vec2 q(rel.dot(dir), rel.cross(dir).norm());
+        const Vec2 q = pointInFaceFrame(mesh_, p, f, e);
         for (const Interval& w : edges_[e].intervals()) {
           // Any window gives a valid path: to the point c of its range nearest the straight
           // line, then straight to q; with the source reflected below the edge the best c is
@@ -326,12 +332,6 @@ double GeodesicSolver::resolvedDistance(const ResolvedPoint& p) const {
           const Vec2 c(cx, 0.0);
           best = std::min(best, w.sigma + (c - s).norm() + (q - c).norm());
         }
-      }
-      for (const ResolvedPoint& src : sources_) {
-        const bool touches =
-            (src.kind == SurfacePoint::Kind::Face && src.element == f) ||
-            (src.kind == SurfacePoint::Kind::Edge && mesh_.localEdgeIndex(f, src.element) >= 0);
-        if (touches) best = std::min(best, (src.position - p.position).norm());
       }
       break;
     }

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <vector>
 
+#include "geodex/check.h"
 #include "geodex/error.h"
 #include "geodex/tolerance.h"
 
@@ -142,6 +143,33 @@ ResolvedPoint resolve(const Mesh& mesh, const SurfacePoint& p) {
     }
   }
   throw InputError("bad-point", "unknown point kind");
+}
+
+Vec2 pointInFaceFrame(const Mesh& mesh, const ResolvedPoint& p, Index f, Index e) {
+  const FaceFrame& fr = mesh.frame(f, e);
+  const Edge& E = mesh.edge(e);
+  const auto corner = [&](Index v) -> Vec2 {
+    if (v == E.vertex[0]) return Vec2(0.0, 0.0);
+    if (v == E.vertex[1]) return Vec2(E.length, 0.0);
+    GEODEX_REQUIRE(v == fr.apex, "vertex " << v << " is not a corner of face " << f);
+    return fr.apexPos;
+  };
+  switch (p.kind) {
+    case SurfacePoint::Kind::Vertex: return corner(p.element);
+    case SurfacePoint::Kind::Edge: {
+      if (p.element == e) return Vec2(p.t, 0.0);
+      const Edge& S = mesh.edge(p.element);
+      const Vec2 a = corner(S.vertex[0]), b = corner(S.vertex[1]);
+      return a + (p.t / S.length) * (b - a);
+    }
+    case SurfacePoint::Kind::Face: {
+      GEODEX_REQUIRE(p.element == f, "face point of face " << p.element << " is not in face " << f);
+      const auto& corners = mesh.face(f);
+      return p.bary[0] * corner(corners[0]) + p.bary[1] * corner(corners[1]) +
+             p.bary[2] * corner(corners[2]);
+    }
+  }
+  return Vec2(0.0, 0.0);
 }
 
 }  // namespace geodex

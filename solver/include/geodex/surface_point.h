@@ -52,4 +52,12 @@ struct ResolvedPoint {
 /// Throws InputError naming the element otherwise.
 ResolvedPoint resolve(const Mesh& mesh, const SurfacePoint& p);
 
+/// Coordinates of p — a corner of face f, a point on one of f's edges, or a point inside f — in
+/// the frame of f unfolded onto its edge e (Mesh::frame: e's vertex[0] at the origin, e along +x,
+/// the apex above). Computed from p's edge parameter or barycentrics and the frame's corners,
+/// never from absolute 3-D positions: a mesh far from the origin keeps the precision of its
+/// local lengths (a point 5e6 from the origin is only known to ~1e-9 in absolute coordinates).
+/// Requires p to lie on f (a vertex of f, an edge of f, or f itself).
+Vec2 pointInFaceFrame(const Mesh& mesh, const ResolvedPoint& p, Index f, Index e);
+
 }  // namespace geodex
