@@ -21,26 +21,142 @@ bool incomingWins(const Interval& incoming, const Interval& old, double x) {
   return incoming.distanceAt(x) < g - tol::kTieRel * g;
 }
 
-// Intersection of two propagated sub-ranges, used when an interval is cut to [lo, hi].
-void clipPropagated(Interval& piece) {
-  if (piece.pb0 < piece.b0) piece.pb0 = piece.b0;
-  if (piece.pb1 > piece.b1) piece.pb1 = piece.b1;
+void markChanged(Interval& w) { w.flags |= Interval::kChanged; }
+
+// w's range grows by a part nothing propagated (a tiny neighbour that was still pending, or half
+// a sewn gap). An interval carries one pending bit, not a propagated sub-range, so a propagated
+// one is propagated again whole; its repeated children tie with the ones it made before and
+// Algorithm 2 keeps those (same pseudo-source).
+void grewUnpropagated(Interval& w) {
+  w.markPending();
+  markChanged(w);
+}
+
+// Index of the first interval with b1 >= x, in a sorted, non-overlapping list.
+std::size_t firstEndingAtOrAfter(std::span<const Interval> list, double x) {
+  return static_cast<std::size_t>(
+      std::partition_point(list.begin(), list.end(), [x](const Interval& w) { return w.b1 < x; }) -
+      list.begin());
+}
+
+// ===  Step 2 for one old interval ================================================================
+// Where on old's range [old.b0, old.b1] is the incoming interval shorter? Appends the pieces, in
+// order, to `out`: pieces of the old interval (the first keeps old's state; all are marked
+// changed when old was cut) and pieces of the incoming one (made by newPiece).
+//
+// h = f − g (incoming minus old) has h' = cos θ_in − cos θ_old, zero only where x is collinear
+// with the two sources (both lie on one side of the line, heights >= 0): h is monotone on either
+// side of that point x*. So the winners at old.b0, x* and old.b1 tell every change of winner,
+// at most one between two samples. (A source on the edge line has a kink at its foot, which is
+// x* then; two sources on the line add both feet.) Eq. 1's roots only *locate* a change: with σ or
+// the source distance many orders above the edge length its coefficients cancel, and a root can
+// be off or missing. A root is taken where the two distances really agree there; otherwise (D4)
+// the change is located by bisection on the exact difference of the two distance functions.
+template <typename NewPiece>
+void keepShorter(const Interval& in, const Interval& old, double edgeLength,
+                 EdgeUpdateReport& report, std::vector<Interval>& out, NewPiece&& newPiece) {
+  const double lo = old.b0, hi = old.b1;
+  double sample[5];
+  int numSamples = 0;
+  sample[numSamples++] = lo;
+  const double y1 = in.source.y(), y2 = old.source.y();
+  if (y1 != y2) {
+    const double xStar = (in.source.x() * y2 - old.source.x() * y1) / (y2 - y1);
+    if (xStar > lo && xStar < hi) sample[numSamples++] = xStar;
+  } else if (y1 == 0.0) {
+    for (const double foot : {in.source.x(), old.source.x()})
+      if (foot > lo && foot < hi) sample[numSamples++] = foot;
+  }
+  sample[numSamples++] = hi;
+  std::sort(sample + 1, sample + numSamples - 1);
+  bool wins[5];
+  for (int k = 0; k < numSamples; ++k) wins[k] = incomingWins(in, old, sample[k]);
+  // Where the two distances agree at an end of the piece up to rounding (both windows through
+  // the same point, typically a vertex or a shared boundary ray), the tie there says nothing
+  // about the inside: the end takes the verdict of the sample next to it. (Only up to rounding:
+  // on a long edge two functions can differ by less than kContinuityRel × the edge length at an
+  // end and still cross far inside.)
+  auto agreeAt = [&](double x) {
+    const double g = old.distanceAt(x);
+    return std::abs(in.distanceAt(x) - g) <= tol::kRoundingRel * (g + edgeLength);
+  };
+  if (wins[0] != wins[1] && agreeAt(lo)) wins[0] = wins[1];
+  if (wins[numSamples - 1] != wins[numSamples - 2] && agreeAt(hi))
+    wins[numSamples - 1] = wins[numSamples - 2];
+
+  bool uniform = true;
+  for (int k = 1; k < numSamples; ++k) uniform = uniform && wins[k] == wins[0];
+  if (uniform) {  // the common case: one of the two is shorter on the whole piece
+    if (wins[0]) {
+      out.push_back(newPiece(lo, hi));
+    } else {
+      out.push_back(old);
+    }
+    return;
+  }
+
+  const double pieceTiny = std::max(tinyLength(in, edgeLength), tinyLength(old, edgeLength));
+  const double bisectionResolution = 1e-3 * tol::kTinyIntervalRel * edgeLength;
+  double roots[2];
+  int numRoots = -1;  // computed on first need
+  double cut[6];
+  bool cutWins[5];
+  int m = 0;
+  cut[0] = lo;
+  cutWins[0] = wins[0];
+  for (int k = 1; k < numSamples; ++k) {
+    if (wins[k] == cutWins[m]) continue;
+    const double a = sample[k - 1], b = sample[k];
+    if (numRoots < 0) numRoots = equalDistanceCandidates(in, old, lo, hi, roots);
+    double x = -1.0;
+    for (int r = 0; r < numRoots; ++r) {
+      if (roots[r] <= a || roots[r] >= b) continue;
+      const double f = in.distanceAt(roots[r]), g = old.distanceAt(roots[r]);
+      if (std::abs(f - g) <= tol::kContinuityRel * (g + edgeLength)) x = roots[r];
+    }
+    if (x < 0.0) {  // no accurate root between two samples with different winners
+      double l = a, h = b;
+      const bool loWins = wins[k - 1];
+      for (int it = 0; it < 200 && h - l > bisectionResolution; ++it) {
+        const double mid = 0.5 * (l + h);
+        (incomingWins(in, old, mid) == loWins ? l : h) = mid;
+      }
+      x = 0.5 * (l + h);
+      // D4 if the change is a real crossing inside the piece. One within ε of the piece's end
+      // is the two functions meeting there (e.g. both through the same vertex), which Eq. 1 need
+      // not resolve: the sliver it leaves is step 3's (D1).
+      if (x - lo > pieceTiny && hi - x > pieceTiny) ++report.degeneracies[DegeneracyKind::D4];
+    }
+    report.eq1Breakpoints.push_back(x);
+    cut[++m] = x;
+    cutWins[m] = wins[k];
+  }
+  cut[++m] = hi;
+  for (int k = 0; k < m; ++k) {
+    if (cutWins[k]) {
+      out.push_back(newPiece(cut[k], cut[k + 1]));
+    } else {
+      Interval w = old;
+      w.b0 = cut[k];
+      w.b1 = cut[k + 1];
+      markChanged(w);  // a second piece of a pending interval needs its own queue entry
+      out.push_back(w);
+    }
+  }
 }
 
 }  // namespace
 
-Interval* EdgeIntervals::find(std::uint32_t id) {
-  for (Interval& w : list_)
-    if (w.id == id) return &w;
-  return nullptr;
+const Interval* EdgeIntervals::at(double x) const {
+  const std::size_t i = firstEndingAtOrAfter(list_, x);
+  if (i == list_.size() || list_[i].b0 > x) return nullptr;
+  return &list_[i];
 }
 
 double EdgeIntervals::distanceAt(double x) const {
   double best = std::numeric_limits<double>::infinity();
-  for (const Interval& w : list_) {
-    if (x < w.b0) break;
-    if (x <= w.b1) best = std::min(best, w.distanceAt(x));
-  }
+  for (std::size_t i = firstEndingAtOrAfter(list_, x); i < list_.size() && list_[i].b0 <= x; ++i)
+    best = std::min(best, list_[i].distanceAt(x));
   return best;
 }
 
@@ -85,214 +201,116 @@ int equalDistanceCandidates(const Interval& a, const Interval& b, double lo, dou
 }
 
 // ===  Algorithm 2 ================================================================================
-void EdgeIntervals::insert(const Interval& incoming, double edgeLength, IntervalIdSource& ids,
-                           EdgeUpdateReport& report, std::vector<Interval>& out) {
+void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpdateReport& report,
+                           std::vector<Interval>& out) {
   GEODEX_CHECK(incoming.b0 >= 0.0 && incoming.b1 <= edgeLength && incoming.b0 < incoming.b1,
                "incoming interval [" << incoming.b0 << ", " << incoming.b1 << "] not inside [0, "
                                      << edgeLength << "]");
   report.clear();
-  // Bisection (D4) stops well below the smallest ε any interval on this edge can have.
-  const double bisectionResolution = 1e-3 * tol::kTinyIntervalRel * edgeLength;
+  // Pieces of the incoming interval carry kFromIncoming until the end of the update, so that
+  // report.incomingSurvived can tell whether any of it is left.
+  constexpr std::uint8_t kFromIncoming = 4;
   Interval in = incoming;
-  bool incomingIdUsed = false;
+  in.flags = static_cast<std::uint8_t>((incoming.flags & Interval::kPending) | Interval::kChanged |
+                                       kFromIncoming);
   auto newPiece = [&](double lo, double hi) {
     Interval w = in;
     w.b0 = lo;
     w.b1 = hi;
-    clipPropagated(w);
-    w.queuedKey = -1.0f;
-    if (incomingIdUsed) w.id = ids();
-    incomingIdUsed = true;
     return w;
   };
 
-  // --- Step 1: split the old intervals at the new one's ends, so each is wholly inside or
-  //     outside it. An overlap shorter than ε is not split off: it is a D2 degeneracy (two
-  //     intervals intersecting by a rounding error), resolved by meeting at the overlap's midpoint.
+  // --- The slice this update reads and rewrites: the old intervals the incoming range reaches,
+  //     and two more on each side. The list is clean outside the incoming range (the previous
+  //     update left it so), so steps 3–5 can only find something at the changed intervals and
+  //     their immediate neighbours; the outer two are read for their ε and left as they are.
+  const std::size_t n = list_.size();
+  const std::size_t j0 = static_cast<std::size_t>(
+      std::partition_point(list_.begin(), list_.end(),
+                           [&](const Interval& w) { return w.b1 <= in.b0; }) - list_.begin());
+  const std::size_t j1 = static_cast<std::size_t>(
+      std::partition_point(list_.begin() + static_cast<std::ptrdiff_t>(j0), list_.end(),
+                           [&](const Interval& w) { return w.b0 < in.b1; }) - list_.begin());
+  const std::size_t s0 = j0 >= 2 ? j0 - 2 : 0;
+  const std::size_t s1 = std::min(n, j1 + 2);
+
+  // --- Steps 1 and 2 in one pass over the slice. Step 1 splits each old interval at the new
+  //     one's ends, so that each piece is wholly inside or outside it (an overlap shorter than ε
+  //     is not split off: it is D2, two intervals intersecting by a rounding error, resolved by
+  //     meeting at the overlap's midpoint). Step 2 keeps, on each piece inside, the shorter of
+  //     the two; the new interval fills what no old interval covered.
   out.clear();
-  {
-    std::vector<Interval>& split = out;
-    for (const Interval& oldInterval : list_) {
-      Interval w = oldInterval;
-      if (w.b1 <= in.b0 || w.b0 >= in.b1) {
-        split.push_back(w);
-        continue;
-      }
-      const double overlapTiny = std::max(tinyLength(w, edgeLength), tinyLength(in, edgeLength));
-      if (w.b0 < in.b0 && w.b1 - in.b0 < overlapTiny && w.b1 < in.b1) {  // D2 at the new one's start
-        ++report.degeneracies[DegeneracyKind::D2];
-        const double mid = 0.5 * (in.b0 + w.b1);
-        w.b1 = mid;
-        in.b0 = mid;
-        clipPropagated(w);
-        split.push_back(w);
-        continue;
-      }
-      if (w.b1 > in.b1 && in.b1 - w.b0 < overlapTiny && w.b0 > in.b0) {  // D2 at the new one's end
-        ++report.degeneracies[DegeneracyKind::D2];
-        const double mid = 0.5 * (in.b1 + w.b0);
-        w.b0 = mid;
-        in.b1 = mid;
-        clipPropagated(w);
-        split.push_back(w);
-        continue;
-      }
-      if (w.b0 < in.b0) {  // 1.3: separate at interb0
-        Interval left = w;
-        left.b1 = in.b0;
-        clipPropagated(left);
-        split.push_back(left);
-        w.b0 = in.b0;
-        w.id = ids();
-        w.queuedKey = -1.0f;
-      }
-      Interval right = w;
-      const bool hasRight = w.b1 > in.b1;
-      if (hasRight) {  // 1.4: separate at interb1
-        w.b1 = in.b1;
-        right.b0 = in.b1;
-        right.id = ids();
-        right.queuedKey = -1.0f;
-        clipPropagated(right);
-      }
-      clipPropagated(w);
-      split.push_back(w);
-      if (hasRight) split.push_back(right);
+  double cursor = in.b0;     // the incoming range up to here is accounted for
+  bool incomingDone = false;  // the incoming interval's pieces are all in `out`
+  auto finishIncoming = [&] {
+    if (!incomingDone && cursor < in.b1) out.push_back(newPiece(cursor, in.b1));
+    incomingDone = true;
+  };
+  for (std::size_t k = s0; k < s1; ++k) {
+    Interval w = list_[k];
+    if (w.b1 <= in.b0) {  // before the incoming range
+      out.push_back(w);
+      continue;
+    }
+    if (incomingDone || w.b0 >= in.b1) {  // after it
+      finishIncoming();
+      out.push_back(w);
+      continue;
+    }
+    const double overlapTiny = std::max(tinyLength(w, edgeLength), tinyLength(in, edgeLength));
+    if (w.b0 < in.b0 && w.b1 - in.b0 < overlapTiny && w.b1 < in.b1) {  // D2 at the new one's start
+      ++report.degeneracies[DegeneracyKind::D2];
+      const double mid = 0.5 * (in.b0 + w.b1);
+      w.b1 = mid;
+      in.b0 = cursor = mid;
+      markChanged(w);
+      out.push_back(w);
+      continue;
+    }
+    if (w.b1 > in.b1 && in.b1 - w.b0 < overlapTiny && w.b0 > in.b0) {  // D2 at the new one's end
+      ++report.degeneracies[DegeneracyKind::D2];
+      const double mid = 0.5 * (in.b1 + w.b0);
+      w.b0 = mid;
+      in.b1 = mid;
+      markChanged(w);
+      finishIncoming();
+      out.push_back(w);
+      continue;
+    }
+    if (w.b0 < in.b0) {  // 1.3: separate at interb0
+      Interval left = w;
+      left.b1 = in.b0;
+      markChanged(left);
+      out.push_back(left);
+      w.b0 = in.b0;
+      markChanged(w);
+    }
+    Interval right = w;
+    const bool hasRight = w.b1 > in.b1;
+    if (hasRight) {  // 1.4: separate at interb1
+      w.b1 = in.b1;
+      right.b0 = in.b1;
+      markChanged(right);
+      markChanged(w);
+    }
+    if (w.b0 > cursor) out.push_back(newPiece(cursor, w.b0));  // a gap: the new one's
+    cursor = w.b1;
+    if (sameSource(in, w, edgeLength)) {  // the same geodesic arriving again: keep the old
+      out.push_back(w);
+    } else {
+      keepShorter(in, w, edgeLength, report, out, newPiece);
+    }
+    if (hasRight) {
+      incomingDone = true;
+      out.push_back(right);
     }
   }
-  // --- Step 2: for each old interval inside the new one, keep on each piece the shorter of the
-  //     two; the new interval fills what no old interval covered. (A D2 repair may have
-  //     consumed the whole, tiny, incoming interval: then there is nothing to compare.)
-  if (in.b1 <= in.b0) {
-    list_.assign(out.begin(), out.end());
-    out.clear();
-  } else {
-    // Read the split list from `out`, build the merged one in a second reused buffer.
-    const std::vector<Interval>& split = out;
-    static thread_local std::vector<Interval> merged;
-    merged.clear();
-    std::size_t i = 0;
-    for (; i < split.size() && split[i].b1 <= in.b0; ++i) merged.push_back(split[i]);
-    double cursor = in.b0;
-    for (; i < split.size() && split[i].b0 < in.b1; ++i) {
-      const Interval& old = split[i];
-      if (old.b0 > cursor) merged.push_back(newPiece(cursor, old.b0));  // a gap: the new one's
-      cursor = old.b1;
-      if (sameSource(in, old, edgeLength)) {  // the same geodesic arriving again: keep the old
-        merged.push_back(old);
-        continue;
-      }
-      // Eq. 1's roots only *propose* where the winner may change: with σ or the source distance
-      // many orders above the edge length its coefficients cancel, and a root can be off or
-      // missing. The winner is decided by evaluating both distances, at the piece's ends and at
-      // the middle of each sub-range the roots delimit; where it changes between two samples, a
-      // root that lies there and makes the distances agree is the breakpoint, else (D4) the
-      // change is located by bisection.
-      double roots[2];
-      int numRoots = equalDistanceCandidates(in, old, old.b0, old.b1, roots);
-      const double pieceTiny = std::max(tinyLength(in, edgeLength), tinyLength(old, edgeLength));
-      if (numRoots == 2 && roots[1] - roots[0] <= pieceTiny) {  // a double root: tangent functions
-        roots[0] = 0.5 * (roots[0] + roots[1]);
-        numRoots = 1;
-      }
-      // h = f − g has h' = cos θ_in − cos θ_old, zero only where x is collinear with the two
-      // sources (both lie on one side of the line, heights >= 0): so h is monotone on either
-      // side of that point x*, and with x* among the samples every sign change of h lies between
-      // two samples. (Sources on the line itself add kinks at their feet: sampled too.)
-      double sample[9];
-      int numSamples = 0;
-      sample[numSamples++] = old.b0;
-      {
-        double prev = old.b0;
-        for (int k = 0; k <= numRoots; ++k) {
-          const double next = k < numRoots ? roots[k] : old.b1;
-          sample[numSamples++] = 0.5 * (prev + next);
-          prev = next;
-        }
-      }
-      const double y1 = in.source.y(), y2 = old.source.y();
-      if (y1 != y2) {
-        const double xStar = (in.source.x() * y2 - old.source.x() * y1) / (y2 - y1);
-        if (xStar > old.b0 && xStar < old.b1) sample[numSamples++] = xStar;
-      }
-      for (const double foot : {in.source.x(), old.source.x()})
-        if (foot > old.b0 && foot < old.b1) sample[numSamples++] = foot;
-      sample[numSamples++] = old.b1;
-      std::sort(sample, sample + numSamples);
-      bool wins[9];
-      for (int k = 0; k < numSamples; ++k) wins[k] = incomingWins(in, old, sample[k]);
-      // Where the two distances agree at an end of the piece (both windows through the same
-      // point, typically a vertex or a shared boundary ray), the tie there says nothing about
-      // the inside: the end takes the verdict of the sample next to it.
-      auto agreeAt = [&](double x) {
-        const double g = old.distanceAt(x);
-        return std::abs(in.distanceAt(x) - g) <= tol::kContinuityRel * (g + edgeLength);
-      };
-      if (agreeAt(old.b0)) wins[0] = wins[1];
-      if (agreeAt(old.b1)) wins[numSamples - 1] = wins[numSamples - 2];
-      double cut[10];
-      bool cutWins[9];
-      int m = 0;
-      cut[0] = old.b0;
-      cutWins[0] = wins[0];
-      for (int k = 1; k < numSamples; ++k) {
-        if (wins[k] == cutWins[m]) continue;
-        const double lo0 = sample[k - 1], hi0 = sample[k];
-        double x = -1.0;
-        for (int r = 0; r < numRoots; ++r) {
-          if (roots[r] <= lo0 || roots[r] >= hi0) continue;
-          const double f = in.distanceAt(roots[r]), g = old.distanceAt(roots[r]);
-          if (std::abs(f - g) <= tol::kContinuityRel * (g + edgeLength)) x = roots[r];
-        }
-        if (x < 0.0) {  // no accurate root between two samples with different winners
-          double lo = lo0, hi = hi0;
-          const bool loWins = wins[k - 1];
-          for (int it = 0; it < 200 && hi - lo > bisectionResolution; ++it) {
-            const double mid = 0.5 * (lo + hi);
-            (incomingWins(in, old, mid) == loWins ? lo : hi) = mid;
-          }
-          x = 0.5 * (lo + hi);
-          // D4 if the change is a real crossing inside the piece. One within ε of the piece's
-          // end is the two functions meeting there (e.g. both through the same vertex), which
-          // Eq. 1 need not resolve: the sliver it leaves is step 3's (D1).
-          if (x - old.b0 > pieceTiny && old.b1 - x > pieceTiny) ++report.degeneracies[DegeneracyKind::D4];
-        }
-        report.eq1Breakpoints.push_back(x);
-        cut[++m] = x;
-        cutWins[m] = wins[k];
-      }
-      cut[++m] = old.b1;
-      bool oldIdUsed = false;
-      for (int k = 0; k < m; ++k) {
-        if (cutWins[k]) {
-          merged.push_back(newPiece(cut[k], cut[k + 1]));
-        } else {
-          Interval w = old;
-          w.b0 = cut[k];
-          w.b1 = cut[k + 1];
-          clipPropagated(w);
-          if (oldIdUsed) {
-            w.id = ids();
-            w.queuedKey = -1.0f;
-          }
-          oldIdUsed = true;
-          merged.push_back(w);
-        }
-      }
-    }
-    if (cursor < in.b1) merged.push_back(newPiece(cursor, in.b1));
-    for (; i < split.size(); ++i) merged.push_back(split[i]);
-    report.incomingSurvived = incomingIdUsed;
-    // assign, not swap: the edge's buffer then grows to exactly what it holds (intervals are
-    // most of the solver's memory), and the scratch keeps its large capacity for reuse.
-    list_.assign(merged.begin(), merged.end());
-    out.clear();
-  }
+  finishIncoming();
 
-  std::vector<Interval>& L = list_;
+  std::vector<Interval>& L = out;
+  const bool atFront = s0 == 0, atBack = s1 == n;
 
-  // --- Step 3: remove tiny intervals (D1), merging each into a neighbour that touches it. The
-  //     grown neighbour keeps its propagated range, so the tiny part still gets propagated. A
+  // --- Step 3: remove tiny intervals (D1), merging each into a neighbour that touches it. A
   //     neighbour grown this way may itself still be tiny next to a coarser one: repeat until
   //     nothing is (each pass removes at least one interval, so this ends).
   for (bool removed = true; removed;) {
@@ -318,74 +336,90 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, Interval
       const Interval t = L[r];
       report.removedTiny.emplace_back(t.b0, t.b1);
       // Prefer the neighbour with the coarser scale: merging into the same-scale one would only
-      // leave a sliver as thin as before beside the coarse one.
+      // leave a sliver as thin as before beside the coarse one. Between equal scales, prefer the
+      // one that needs no second propagation (a pending one for a pending sliver).
       const bool prevTouches = w > 0 && L[w - 1].b1 >= t.b0 - tiny;
       const bool nextTouches = r + 1 < L.size() && L[r + 1].b0 <= t.b1 + tiny;
-      const bool intoNext = nextTouches && (!prevTouches || tinyLength(L[r + 1], edgeLength) >
-                                                                 tinyLength(L[w - 1], edgeLength));
-      if (intoNext) {
-        Interval& next = L[r + 1];
-        if (t.fullyPropagated() && next.pb0 <= next.b0 && !next.nothingPropagated()) next.pb0 = t.b0;
-        next.b0 = std::min(next.b0, t.b0);
-      } else if (prevTouches) {
-        Interval& prev = L[w - 1];
-        if (t.fullyPropagated() && prev.pb1 >= prev.b1 && !prev.nothingPropagated()) prev.pb1 = t.b1;
-        prev.b1 = std::max(prev.b1, t.b1);
+      bool intoNext = nextTouches && !prevTouches;
+      if (nextTouches && prevTouches) {
+        const double tn = tinyLength(L[r + 1], edgeLength), tp = tinyLength(L[w - 1], edgeLength);
+        intoNext = tn > tp || (tn == tp && t.pending() && L[r + 1].pending() && !L[w - 1].pending());
+      }
+      if (intoNext || prevTouches) {
+        Interval& into = intoNext ? L[r + 1] : L[w - 1];
+        if (intoNext) {
+          into.b0 = std::min(into.b0, t.b0);
+        } else {
+          into.b1 = std::max(into.b1, t.b1);
+        }
+        markChanged(into);
+        if (t.pending() && !into.pending()) grewUnpropagated(into);
       }
     }
     L.resize(w);
   }
 
-  // --- Step 4: sew gaps shorter than ε at their midpoint (D3); an overlap left here (D2) is
-  //     resolved the same way. The edge's ends count as neighbours.
+  // --- Step 4: sew gaps shorter than ε (D3); an overlap left here (D2) is resolved at its
+  //     midpoint. The paper sews a gap at its midpoint; where only one side is still pending we
+  //     move that side's end across the whole gap instead, so the propagated side need not be
+  //     propagated again (either way each point of the gap takes a neighbour's value, which is
+  //     all step 4 promises). The edge's ends count as neighbours.
   if (!L.empty()) {
-    if (L.front().b0 > 0.0 && L.front().b0 < tinyLength(L.front(), edgeLength)) {
+    if (atFront && L.front().b0 > 0.0 && L.front().b0 < tinyLength(L.front(), edgeLength)) {
       ++report.degeneracies[DegeneracyKind::D3];
       L.front().b0 = 0.0;
+      markChanged(L.front());
+      if (!L.front().pending()) grewUnpropagated(L.front());
     }
-    if (L.back().b1 < edgeLength && edgeLength - L.back().b1 < tinyLength(L.back(), edgeLength)) {
+    if (atBack && L.back().b1 < edgeLength &&
+        edgeLength - L.back().b1 < tinyLength(L.back(), edgeLength)) {
       ++report.degeneracies[DegeneracyKind::D3];
       L.back().b1 = edgeLength;
+      markChanged(L.back());
+      if (!L.back().pending()) grewUnpropagated(L.back());
     }
     for (std::size_t k = 0; k + 1 < L.size(); ++k) {
-      const double gap = L[k + 1].b0 - L[k].b1;
+      Interval& p = L[k];
+      Interval& q = L[k + 1];
+      const double gap = q.b0 - p.b1;
       if (gap == 0.0) continue;
-      const double tiny = std::max(tinyLength(L[k], edgeLength), tinyLength(L[k + 1], edgeLength));
+      const double tiny = std::max(tinyLength(p, edgeLength), tinyLength(q, edgeLength));
       if (gap > 0.0) {
         // The shadow a flat vertex leaves grows with the distance (see tol::kFlatVertexAngle).
-        const double shadow = tol::kFlatVertexAngle *
-                              std::min(L[k].distanceAt(L[k].b1), L[k + 1].distanceAt(L[k + 1].b0));
+        const double shadow =
+            tol::kFlatVertexAngle * std::min(p.distanceAt(p.b1), q.distanceAt(q.b0));
         if (gap >= std::max(tiny, shadow)) continue;
-      } else if (gap <= -tiny) {
-        continue;
+        ++report.degeneracies[DegeneracyKind::D3];
+        if (p.pending() && !q.pending()) {
+          p.b1 = q.b0;
+        } else if (q.pending() && !p.pending()) {
+          q.b0 = p.b1;
+        } else {
+          const double mid = 0.5 * (p.b1 + q.b0);
+          p.b1 = q.b0 = mid;
+          if (!p.pending()) grewUnpropagated(p);
+          if (!q.pending()) grewUnpropagated(q);
+        }
+      } else {
+        if (gap <= -tiny) continue;
+        ++report.degeneracies[DegeneracyKind::D2];
+        const double mid = 0.5 * (p.b1 + q.b0);
+        p.b1 = q.b0 = mid;
       }
-      ++report.degeneracies[gap > 0.0 ? DegeneracyKind::D3 : DegeneracyKind::D2];
-      const double mid = 0.5 * (L[k].b1 + L[k + 1].b0);
-      L[k].b1 = mid;
-      L[k + 1].b0 = mid;
-      clipPropagated(L[k]);
-      clipPropagated(L[k + 1]);
+      markChanged(p);
+      markChanged(q);
     }
   }
 
-  // --- Step 5: merge neighbours with the same pseudo-source.
+  // --- Step 5: merge neighbours with the same pseudo-source (and the same propagation state:
+  //     merging a propagated interval into a pending one would propagate it a second time).
   {
     std::size_t w = 0;
     for (std::size_t r = 0; r < L.size(); ++r) {
-      if (w > 0 && L[w - 1].b1 == L[r].b0 && sameSource(L[w - 1], L[r], edgeLength)) {
-        Interval& p = L[w - 1];
-        const Interval& q = L[r];
-        const bool pReachesEnd = !p.nothingPropagated() && p.pb1 >= p.b1;
-        const bool qReachesStart = !q.nothingPropagated() && q.pb0 <= q.b0;
-        if (pReachesEnd && qReachesStart) {
-          p.pb1 = q.pb1;
-        } else if (!q.nothingPropagated() &&
-                   (p.nothingPropagated() || q.pb1 - q.pb0 > p.pb1 - p.pb0)) {
-          p.pb0 = q.pb0;
-          p.pb1 = q.pb1;
-        }
-        p.b1 = q.b1;
-        if (p.id == incoming.id || q.id == incoming.id) report.incomingSurvived = true;
+      if (w > 0 && L[w - 1].b1 == L[r].b0 && L[w - 1].pending() == L[r].pending() &&
+          sameSource(L[w - 1], L[r], edgeLength)) {
+        L[w - 1].b1 = L[r].b1;
+        L[w - 1].flags |= static_cast<std::uint8_t>(Interval::kChanged | (L[r].flags & kFromIncoming));
         continue;
       }
       L[w++] = L[r];
@@ -394,13 +428,28 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, Interval
   }
 
   for (Interval& w : L) {
-    if (w.fullyPropagated()) continue;
-    if (w.queuedKey != static_cast<float>(w.minDistance())) report.toQueue.push_back(w.id);
+    if (w.flags & kFromIncoming) report.incomingSurvived = true;
+    w.flags &= static_cast<std::uint8_t>(~kFromIncoming);
   }
-  if (!report.incomingSurvived) {
-    for (const Interval& w : L)
-      if (w.id == incoming.id) report.incomingSurvived = true;
+
+  // --- Splice the rewritten slice back in place of [s0, s1).
+  const std::size_t oldCount = s1 - s0, newCount = L.size();
+  if (newCount > oldCount) {
+    const std::size_t grow = newCount - oldCount;
+    if (list_.size() + grow > list_.capacity()) {
+      // Grow by a quarter, not the default doubling: the lists are most of the solver's memory
+      // and most edges end with a handful of intervals.
+      list_.reserve(list_.size() + grow + std::max<std::size_t>(2, list_.size() / 4));
+    }
+    list_.insert(list_.begin() + static_cast<std::ptrdiff_t>(s1), grow, Interval{});
+  } else if (newCount < oldCount) {
+    list_.erase(list_.begin() + static_cast<std::ptrdiff_t>(s0 + newCount),
+                list_.begin() + static_cast<std::ptrdiff_t>(s1));
   }
+  std::copy(L.begin(), L.end(), list_.begin() + static_cast<std::ptrdiff_t>(s0));
+  report.first = s0;
+  report.last = s0 + newCount;
+  out.clear();
 }
 
 }  // namespace geodex

@@ -35,7 +35,6 @@ void GeodesicSolver::reset() {
   vertexDistance_.assign(mesh_.numVertices(), kInfinity);
   sources_.clear();
   queue_ = {};
-  ids_ = {};
   counters_ = {};
   stats_ = {};
 }
@@ -71,16 +70,15 @@ void GeodesicSolver::solve(std::span<const SurfacePoint> sources, const SolveOpt
     queue_.pop();
     ++pops;
     if (top.edge == kNoIndex) {  // a pseudo-source event; stale if the vertex improved since
-      if (top.key == vertexDistance_[top.id]) {
-        createPseudoSourceWindows(top.id, top.key, static_cast<std::int32_t>(top.id));
+      if (top.key == vertexDistance_[top.vertex]) {
+        createPseudoSourceWindows(top.vertex, top.key, static_cast<std::int32_t>(top.vertex));
       }
       continue;
     }
-    Interval* w = edges_[top.edge].find(top.id);
-    if (w == nullptr || w->fullyPropagated() || w->queuedKey != static_cast<float>(top.key)) continue;
-    const Interval window = *w;
+    Interval* w = queuedInterval(top);
+    if (w == nullptr) continue;  // stale: propagated already, or changed and queued again
     w->markPropagated();
-    w->queuedKey = -1.0f;
+    const Interval window = *w;
     propagate(top.edge, window);
   }
   finish(options, radius);
@@ -106,7 +104,6 @@ void GeodesicSolver::seedSource(const ResolvedPoint& p, std::size_t number) {
       own.b1 = E.length;
       own.source = Vec2(p.t, 0.0);
       own.origin = origin;
-      own.id = ids_();
       own.markPropagated();
       addInterval(p.element, own, nullptr);
       for (Index f : E.face) {
@@ -114,7 +111,6 @@ void GeodesicSolver::seedSource(const ResolvedPoint& p, std::size_t number) {
         for (Index e : mesh_.faceEdges(f)) {
           if (e == p.element) continue;
           Interval w = windowFromPoint(mesh_, f, e, p, 0.0, origin);
-          w.id = ids_();
           if (mesh_.edge(e).face[1 - w.side] == kNoIndex) w.markPropagated();
           addInterval(e, w, nullptr);
         }
@@ -124,7 +120,6 @@ void GeodesicSolver::seedSource(const ResolvedPoint& p, std::size_t number) {
     case SurfacePoint::Kind::Face:
       for (Index e : mesh_.faceEdges(p.element)) {
         Interval w = windowFromPoint(mesh_, p.element, e, p, 0.0, origin);
-        w.id = ids_();
         if (mesh_.edge(e).face[1 - w.side] == kNoIndex) w.markPropagated();
         addInterval(e, w, nullptr);
       }
@@ -149,7 +144,6 @@ void GeodesicSolver::createPseudoSourceWindows(Index v, double sigma, std::int32
     w.sigma = sigma;
     w.side = static_cast<std::uint8_t>(mesh_.sideOf(fr.edge, f));
     w.origin = origin;
-    w.id = ids_();
     if (mesh_.edge(fr.edge).face[1 - w.side] == kNoIndex) w.markPropagated();
     addInterval(fr.edge, w, nullptr);
   }
@@ -161,7 +155,6 @@ void GeodesicSolver::createPseudoSourceWindows(Index v, double sigma, std::int32
     w.source = Vec2(E.vertex[0] == v ? 0.0 : E.length, 0.0);
     w.sigma = sigma;
     w.origin = origin;
-    w.id = ids_();
     w.markPropagated();
     addInterval(e, w, nullptr);
   }
@@ -175,28 +168,10 @@ void GeodesicSolver::propagate(Index edge, const Interval& w) {
   const FaceFrame& fr = mesh_.frame(f, edge);
   ++stats_.intervalsPropagated;
 
-  // Only the part not yet propagated (an interval grown by Algorithm 2 propagates its growth).
-  double ranges[2][2];
-  int numRanges = 0;
-  if (w.nothingPropagated()) {
-    ranges[numRanges][0] = w.b0;
-    ranges[numRanges++][1] = w.b1;
-  } else {
-    if (w.pb0 > w.b0) {
-      ranges[numRanges][0] = w.b0;
-      ranges[numRanges++][1] = w.pb0;
-    }
-    if (w.pb1 < w.b1) {
-      ranges[numRanges][0] = w.pb1;
-      ranges[numRanges++][1] = w.b1;
-    }
-  }
-
   const Vec2 v1 = fr.apexPos, v2(E.length, 0.0);
   const bool zeroArea = v1.y() <= tol::kFlatFaceRel * std::max(E.length, v1.norm());
-  for (int r = 0; r < numRanges; ++r) {
-    const LocalWindow local{E.length, v1, ranges[r][0], ranges[r][1],
-                            Vec2(w.source.x(), -w.source.y())};
+  {
+    const LocalWindow local{E.length, v1, w.b0, w.b1, Vec2(w.source.x(), -w.source.y())};
     const LocalPropagation result = propagateLocal(local);
     ++counters_.cases;
     if (const auto kind = degeneracyOf(result.branch)) ++counters_[*kind];
@@ -232,11 +207,25 @@ void GeodesicSolver::propagate(Index edge, const Interval& w) {
       n.sigma = w.sigma;
       n.side = static_cast<std::uint8_t>(mesh_.sideOf(ce, f));
       n.origin = w.origin;
-      n.id = ids_();
       if (CE.face[1 - n.side] == kNoIndex) n.markPropagated();
       addInterval(ce, n, &result.branch);
     }
   }
+}
+
+// The interval a queue entry stands for, if the entry is still current: the pending interval
+// that starts where the queued one started and still has the queued key. An interval changed
+// since it was queued has a newer entry, one propagated since needs none; and no other interval
+// can take an entry's place, since two intervals of an edge never start at the same point. (The
+// point of smallest distance would not do as the locator: where two neighbours meet at a tie,
+// both have their smallest distance there, equal.)
+Interval* GeodesicSolver::queuedInterval(const QueueEntry& entry) {
+  const std::span<Interval> list = edges_[entry.edge].intervals();
+  const auto it = std::partition_point(list.begin(), list.end(),
+                                       [&](const Interval& w) { return w.b0 < entry.b0; });
+  if (it == list.end() || it->b0 != entry.b0 || !it->pending() || it->minDistance() != entry.key)
+    return nullptr;
+  return &*it;
 }
 
 // ===  Edge updates and vertex distances ==========================================================
@@ -245,14 +234,17 @@ void GeodesicSolver::addInterval(Index edge, const Interval& w, const Fig6Branch
   const double length = mesh_.edge(edge).length;
   EdgeIntervals& list = edges_[edge];
   if (observer_ != nullptr) before_.assign(list.intervals().begin(), list.intervals().end());
-  list.insert(w, length, ids_, report_, scratch_);
+  list.insert(w, length, report_, scratch_);
   for (std::size_t k = 0; k < kNumDegeneracyKinds; ++k) counters_.count[k] += report_.degeneracies.count[k];
 
-  for (std::uint32_t id : report_.toQueue) {
-    Interval* iv = list.find(id);
-    const double key = iv->minDistance();
-    iv->queuedKey = static_cast<float>(key);
-    queue_.push({key, edge, id});
+  // A fresh queue entry for every new or changed interval still to be propagated; entries made
+  // for it before are recognised as stale when popped (queuedInterval).
+  const std::span<Interval> all = list.intervals();
+  for (std::size_t i = report_.first; i < report_.last; ++i) {
+    Interval& iv = all[i];
+    if (!(iv.flags & Interval::kChanged)) continue;
+    iv.flags &= static_cast<std::uint8_t>(~Interval::kChanged);
+    if (iv.pending()) queue_.push({iv.minDistance(), iv.b0, edge, kNoIndex});
   }
   const auto intervals = list.intervals();
   if (!intervals.empty()) {
@@ -270,7 +262,7 @@ void GeodesicSolver::updateVertex(Index v, double d) {
   const double bar = current == kInfinity ? kInfinity : current - tol::kTieRel * current;
   if (!(d < bar)) return;
   current = d;
-  if (mesh_.isPseudoSourceVertex(v)) queue_.push({d, kNoIndex, v});
+  if (mesh_.isPseudoSourceVertex(v)) queue_.push({d, 0.0, kNoIndex, v});
 }
 
 void GeodesicSolver::finish(const SolveOptions& options, double radius) {

@@ -59,10 +59,9 @@ int main(int argc, char** argv) {
     const auto& u = std::get<EdgeUpdateCase>(*c);
     EdgeIntervals list;
     list.assign(u.before);
-    IntervalIdSource ids{static_cast<std::uint32_t>(u.before.size() + 2)};
     EdgeUpdateReport report;
     std::vector<Interval> scratch;
-    list.insert(u.incoming, u.edgeLength, ids, report, scratch);
+    list.insert(u.incoming, u.edgeLength, report, scratch);
     algorithm2 += report.degeneracies;
   }
   for (FuzzTarget t : {FuzzTarget::Solver, FuzzTarget::Propagation}) {

@@ -38,16 +38,14 @@ std::string describeList(std::span<const Interval> list) {
 // property at the first violation. Returns the D1–D4 the insertions found.
 DegeneracyCounters runAndCheck(const IntervalListCase& c) {
   EdgeIntervals list;
-  IntervalIdSource ids;
   EdgeUpdateReport report;
   std::vector<Interval> scratch, before;
   verify::InvariantChecker checker(verify::CheckLevel::Full, /*throwOnViolation=*/true);
   DegeneracyCounters found;
   for (std::size_t i = 0; i < c.inserts.size(); ++i) {
     Interval incoming = c.inserts[i];
-    incoming.id = ids();
     before.assign(list.intervals().begin(), list.intervals().end());
-    list.insert(incoming, c.edgeLength, ids, report, scratch);
+    list.insert(incoming, c.edgeLength, report, scratch);
     found += report.degeneracies;
     recordAlgorithm2(report.degeneracies);
 

@@ -284,14 +284,11 @@ TEST(Algorithm2Regression, NearIntervalWinningInsideAFarOneIsKept) {
   for (bool farFirst : {false, true}) {
     SCOPED_TRACE(farFirst ? "far inserted first" : "near inserted first (control)");
     EdgeIntervals list;
-    IntervalIdSource ids;
     EdgeUpdateReport report;
     std::vector<Interval> scratch;
     Interval first = farFirst ? far : near, second = farFirst ? near : far;
-    first.id = ids();
-    list.insert(first, L, ids, report, scratch);
-    second.id = ids();
-    list.insert(second, L, ids, report, scratch);
+    list.insert(first, L, report, scratch);
+    list.insert(second, L, report, scratch);
     EXPECT_NEAR(list.distanceAt(0.1), expectedAt01, tol::kPointwiseMinRel * (expectedAt01 + L));
   }
 }

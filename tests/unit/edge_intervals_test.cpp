@@ -14,25 +14,32 @@ namespace {
 
 constexpr double kL = 10.0;
 
-Interval make(double b0, double b1, Vec2 source, double sigma, std::uint32_t id) {
+Interval make(double b0, double b1, Vec2 source, double sigma) {
   Interval w;
   w.b0 = b0;
   w.b1 = b1;
   w.source = source;
   w.sigma = sigma;
-  w.id = id;
   return w;
 }
 
 struct Edge1 {
   EdgeIntervals list;
-  IntervalIdSource ids{100};
   EdgeUpdateReport report;
   std::vector<Interval> scratch;
   DegeneracyCounters total;
   void insert(const Interval& w) {
-    list.insert(w, kL, ids, report, scratch);
+    list.insert(w, kL, report, scratch);
     total += report.degeneracies;
+  }
+  /// The intervals the last update created or changed that still need propagating: what the
+  /// solver queues.
+  std::vector<Interval> toQueue() const {
+    std::vector<Interval> q;
+    const auto all = list.intervals();
+    for (std::size_t i = report.first; i < report.last; ++i)
+      if ((all[i].flags & Interval::kChanged) && all[i].pending()) q.push_back(all[i]);
+    return q;
   }
 };
 
@@ -61,27 +68,27 @@ void expectPointwiseMin(const EdgeIntervals& e, const std::vector<Interval>& fun
 
 TEST(Algorithm2, FirstIntervalIsKeptWhole) {
   Edge1 e;
-  const Interval a = make(2.0, 7.0, Vec2(4.0, 3.0), 1.0, 1);
+  const Interval a = make(2.0, 7.0, Vec2(4.0, 3.0), 1.0);
   e.insert(a);
   ASSERT_EQ(e.list.intervals().size(), 1u);
   EXPECT_EQ(e.list.intervals()[0].b0, 2.0);
   EXPECT_EQ(e.list.intervals()[0].b1, 7.0);
   EXPECT_TRUE(e.report.incomingSurvived);
-  ASSERT_EQ(e.report.toQueue.size(), 1u);
+  ASSERT_EQ(e.toQueue().size(), 1u);
 }
 
 TEST(Algorithm2, BetterEverywhereReplacesOld) {
   Edge1 e;
-  e.insert(make(0.0, kL, Vec2(5.0, 3.0), 2.0, 1));
-  e.insert(make(0.0, kL, Vec2(5.0, 3.0), 1.0, 2));
+  e.insert(make(0.0, kL, Vec2(5.0, 3.0), 2.0));
+  e.insert(make(0.0, kL, Vec2(5.0, 3.0), 1.0));
   ASSERT_EQ(e.list.intervals().size(), 1u);
   EXPECT_EQ(e.list.intervals()[0].sigma, 1.0);
 }
 
 TEST(Algorithm2, WorseEverywhereIsRejected) {
   Edge1 e;
-  e.insert(make(0.0, kL, Vec2(5.0, 3.0), 1.0, 1));
-  e.insert(make(2.0, 8.0, Vec2(5.0, 3.0), 2.0, 2));
+  e.insert(make(0.0, kL, Vec2(5.0, 3.0), 1.0));
+  e.insert(make(2.0, 8.0, Vec2(5.0, 3.0), 2.0));
   ASSERT_EQ(e.list.intervals().size(), 1u);
   EXPECT_FALSE(e.report.incomingSurvived);
 }
@@ -89,8 +96,8 @@ TEST(Algorithm2, WorseEverywhereIsRejected) {
 TEST(Algorithm2, CrossingFunctionsSplitWhereEqual) {
   // Two sources left and right: the split is on the perpendicular bisector, x = 5.
   Edge1 e;
-  const Interval a = make(0.0, kL, Vec2(2.0, 1.0), 0.0, 1);
-  const Interval b = make(0.0, kL, Vec2(8.0, 1.0), 0.0, 2);
+  const Interval a = make(0.0, kL, Vec2(2.0, 1.0), 0.0);
+  const Interval b = make(0.0, kL, Vec2(8.0, 1.0), 0.0);
   e.insert(a);
   e.insert(b);
   expectWellFormed(e.list);
@@ -104,22 +111,23 @@ TEST(Algorithm2, OldSurvivesInTheMiddleWithTwoRoots) {
   // Old: close to the edge at x = 5 but σ = 1; new: σ = 0 but 2 away. Near x = 5 the old is
   // shorter (1.1 < 2), far from it the new one is (x = 0: 6.001 > 5.39).
   Edge1 e;
-  const Interval old = make(0.0, kL, Vec2(5.0, 0.1), 1.0, 1);
-  const Interval in = make(0.0, kL, Vec2(5.0, 2.0), 0.0, 2);
+  const Interval old = make(0.0, kL, Vec2(5.0, 0.1), 1.0);
+  const Interval in = make(0.0, kL, Vec2(5.0, 2.0), 0.0);
   e.insert(old);
   e.insert(in);
   expectWellFormed(e.list);
   ASSERT_EQ(e.list.intervals().size(), 3u);
   EXPECT_EQ(e.report.eq1Breakpoints.size(), 2u);
   expectPointwiseMin(e.list, {old, in}, 0.0, kL);
-  // Both pieces of the new interval need propagating; the old keeps its id.
-  EXPECT_EQ(e.list.intervals()[1].id, 1u);
+  // Both pieces of the new interval need propagating; the middle is the old one's function.
+  EXPECT_EQ(e.list.intervals()[1].sigma, 1.0);
+  EXPECT_EQ(e.toQueue().size(), 3u) << "two new pieces and the cut old one (still pending)";
 }
 
 TEST(Algorithm2, PartialOverlapSplitsTheOldAtTheNewEnds) {
   Edge1 e;
-  const Interval old = make(0.0, kL, Vec2(5.0, 4.0), 3.0, 1);
-  const Interval in = make(3.0, 6.0, Vec2(4.5, 1.0), 0.5, 2);
+  const Interval old = make(0.0, kL, Vec2(5.0, 4.0), 3.0);
+  const Interval in = make(3.0, 6.0, Vec2(4.5, 1.0), 0.5);
   e.insert(old);
   e.insert(in);
   expectWellFormed(e.list);
@@ -128,9 +136,9 @@ TEST(Algorithm2, PartialOverlapSplitsTheOldAtTheNewEnds) {
 
 TEST(Algorithm2, GapsBetweenOldIntervalsGoToTheNewOne) {
   Edge1 e;
-  const Interval a = make(0.0, 2.0, Vec2(1.0, 1.0), 0.0, 1);
-  const Interval b = make(8.0, kL, Vec2(9.0, 1.0), 0.0, 2);
-  const Interval in = make(0.0, kL, Vec2(5.0, 1.0), 0.0, 3);
+  const Interval a = make(0.0, 2.0, Vec2(1.0, 1.0), 0.0);
+  const Interval b = make(8.0, kL, Vec2(9.0, 1.0), 0.0);
+  const Interval in = make(0.0, kL, Vec2(5.0, 1.0), 0.0);
   e.insert(a);
   e.insert(b);
   e.insert(in);
@@ -142,11 +150,11 @@ TEST(Algorithm2, GapsBetweenOldIntervalsGoToTheNewOne) {
 
 TEST(Algorithm2, D1TinyIntervalIsMergedIntoItsNeighbour) {
   Edge1 e;
-  e.insert(make(0.0, 5.0, Vec2(2.0, 1.0), 0.0, 1));
-  e.insert(make(5.0, kL, Vec2(8.0, 1.0), 0.0, 2));
+  e.insert(make(0.0, 5.0, Vec2(2.0, 1.0), 0.0));
+  e.insert(make(5.0, kL, Vec2(8.0, 1.0), 0.0));
   // A new interval better only on a sliver far below ε.
   const double tiny = 0.1 * tol::kTinyIntervalRel * kL;
-  e.insert(make(5.0, 5.0 + tiny, Vec2(5.0, 1e-3), 0.0, 3));
+  e.insert(make(5.0, 5.0 + tiny, Vec2(5.0, 1e-3), 0.0));
   EXPECT_EQ(e.report.degeneracies[DegeneracyKind::D1], 1u);
   expectWellFormed(e.list);
   for (const Interval& w : e.list.intervals()) EXPECT_GE(w.length(), tol::kTinyIntervalRel * kL);
@@ -154,9 +162,9 @@ TEST(Algorithm2, D1TinyIntervalIsMergedIntoItsNeighbour) {
 
 TEST(Algorithm2, D2TinyOverlapMeetsAtTheMidpoint) {
   Edge1 e;
-  e.insert(make(0.0, 5.0, Vec2(2.0, 1.0), 0.0, 1));
+  e.insert(make(0.0, 5.0, Vec2(2.0, 1.0), 0.0));
   const double overlap = 0.2 * tol::kTinyIntervalRel * kL;
-  e.insert(make(5.0 - overlap, kL, Vec2(8.0, 1.0), 0.0, 2));
+  e.insert(make(5.0 - overlap, kL, Vec2(8.0, 1.0), 0.0));
   EXPECT_EQ(e.report.degeneracies[DegeneracyKind::D2], 1u);
   expectWellFormed(e.list);
   ASSERT_EQ(e.list.intervals().size(), 2u);
@@ -165,9 +173,9 @@ TEST(Algorithm2, D2TinyOverlapMeetsAtTheMidpoint) {
 
 TEST(Algorithm2, D3TinyGapIsSewnAtTheMidpoint) {
   Edge1 e;
-  e.insert(make(0.0, 5.0, Vec2(2.0, 1.0), 0.0, 1));
+  e.insert(make(0.0, 5.0, Vec2(2.0, 1.0), 0.0));
   const double gap = 0.2 * tol::kTinyIntervalRel * kL;
-  e.insert(make(5.0 + gap, kL, Vec2(8.0, 1.0), 0.0, 2));
+  e.insert(make(5.0 + gap, kL, Vec2(8.0, 1.0), 0.0));
   EXPECT_EQ(e.report.degeneracies[DegeneracyKind::D3], 1u);
   expectWellFormed(e.list);
   EXPECT_DOUBLE_EQ(e.list.intervals()[0].b1, 5.0 + gap / 2);
@@ -176,7 +184,7 @@ TEST(Algorithm2, D3TinyGapIsSewnAtTheMidpoint) {
 TEST(Algorithm2, D3GapAtTheEdgeEndIsSewn) {
   Edge1 e;
   const double gap = 0.2 * tol::kTinyIntervalRel * kL;
-  e.insert(make(gap, kL, Vec2(8.0, 1.0), 0.0, 1));
+  e.insert(make(gap, kL, Vec2(8.0, 1.0), 0.0));
   EXPECT_EQ(e.report.degeneracies[DegeneracyKind::D3], 1u);
   EXPECT_EQ(e.list.intervals()[0].b0, 0.0);
 }
@@ -186,9 +194,9 @@ TEST(Algorithm2, D4InaccurateRootIsPolished) {
   // with small edges): the quadratic's coefficients cancel badly (c² ~ 1e11) and its root is
   // off; the split is moved to where the two distances agree. (Found by random search.)
   Edge1 e;
-  const Interval far = make(0.0, kL, Vec2(106679.50483344488, 350837.94985744485), 0.0, 1);
+  const Interval far = make(0.0, kL, Vec2(106679.50483344488, 350837.94985744485), 0.0);
   const Interval nearby =
-      make(0.0, kL, Vec2(0.02921229530964543, 0.031554045793446041), 366698.19360690453, 2);
+      make(0.0, kL, Vec2(0.02921229530964543, 0.031554045793446041), 366698.19360690453);
   e.insert(far);
   e.insert(nearby);
   expectWellFormed(e.list);
@@ -202,39 +210,87 @@ TEST(Algorithm2, D4InaccurateRootIsPolished) {
 
 TEST(Algorithm2, Step5MergesNeighboursWithTheSameSource) {
   Edge1 e;
-  e.insert(make(0.0, 4.0, Vec2(5.0, 2.0), 1.0, 1));
-  e.insert(make(4.0, kL, Vec2(5.0, 2.0), 1.0, 2));
+  e.insert(make(0.0, 4.0, Vec2(5.0, 2.0), 1.0));
+  e.insert(make(4.0, kL, Vec2(5.0, 2.0), 1.0));
   ASSERT_EQ(e.list.intervals().size(), 1u);
   EXPECT_EQ(e.list.intervals()[0].b1, kL);
 }
 
 TEST(Algorithm2, SameSourceArrivingAgainKeepsTheOldAndItsPropagation) {
   Edge1 e;
-  Interval a = make(0.0, kL, Vec2(5.0, 2.0), 1.0, 1);
+  Interval a = make(0.0, kL, Vec2(5.0, 2.0), 1.0);
   a.markPropagated();
   e.insert(a);
-  e.insert(make(0.0, kL, Vec2(5.0, 2.0 + 1e-15), 1.0, 2));
+  e.insert(make(0.0, kL, Vec2(5.0, 2.0 + 1e-15), 1.0));
   ASSERT_EQ(e.list.intervals().size(), 1u);
   EXPECT_TRUE(e.list.intervals()[0].fullyPropagated());
-  EXPECT_TRUE(e.report.toQueue.empty());
+  EXPECT_TRUE(e.toQueue().empty());
 }
 
-TEST(Algorithm2, GrowthOfAPropagatedIntervalPropagatesOnlyTheGrowth) {
+TEST(Algorithm2, SameSourceNeighboursInDifferentPropagationStatesStaySeparate) {
+  // Step 5 would merge them, but then the propagated part would be propagated a second time.
   Edge1 e;
-  Interval a = make(0.0, 4.0, Vec2(5.0, 2.0), 1.0, 1);
+  Interval a = make(0.0, 4.0, Vec2(5.0, 2.0), 1.0);
   a.markPropagated();
   e.insert(a);
-  e.insert(make(4.0, 6.0, Vec2(5.0, 2.0), 1.0, 2));
+  e.insert(make(4.0, 6.0, Vec2(5.0, 2.0), 1.0));
+  ASSERT_EQ(e.list.intervals().size(), 2u);
+  EXPECT_TRUE(e.list.intervals()[0].fullyPropagated());
+  EXPECT_TRUE(e.list.intervals()[1].pending());
+  ASSERT_EQ(e.toQueue().size(), 1u);
+  EXPECT_EQ(e.toQueue()[0].b0, 4.0);
+}
+
+TEST(Algorithm2, TinyPendingSliverMergedIntoAPropagatedNeighbourMakesItPendingAgain) {
+  // The sliver was never propagated; the neighbour taking its range must propagate it.
+  Edge1 e;
+  Interval a = make(0.0, 5.0, Vec2(2.0, 1.0), 0.0);
+  a.markPropagated();
+  e.insert(a);
+  const double tiny = 0.1 * tol::kTinyIntervalRel * kL;
+  e.insert(make(5.0, 5.0 + tiny, Vec2(5.0, 1.0), 0.0));
+  EXPECT_EQ(e.report.degeneracies[DegeneracyKind::D1], 1u);
   ASSERT_EQ(e.list.intervals().size(), 1u);
-  const Interval& w = e.list.intervals()[0];
-  EXPECT_EQ(w.pb0, 0.0);
-  EXPECT_EQ(w.pb1, 4.0);
-  EXPECT_FALSE(w.fullyPropagated());
+  EXPECT_EQ(e.list.intervals()[0].b1, 5.0 + tiny);
+  EXPECT_TRUE(e.list.intervals()[0].pending());
+}
+
+TEST(Algorithm2, D3GapBesideAPropagatedIntervalIsClosedByThePendingSide) {
+  Edge1 e;
+  Interval a = make(0.0, 5.0, Vec2(2.0, 1.0), 0.0);
+  a.markPropagated();
+  e.insert(a);
+  const double gap = 0.2 * tol::kTinyIntervalRel * kL;
+  e.insert(make(5.0 + gap, kL, Vec2(8.0, 1.0), 0.0));
+  EXPECT_EQ(e.report.degeneracies[DegeneracyKind::D3], 1u);
+  expectWellFormed(e.list);
+  EXPECT_EQ(e.list.intervals()[0].b1, 5.0);
+  EXPECT_TRUE(e.list.intervals()[0].fullyPropagated());
+  EXPECT_EQ(e.list.intervals()[1].b0, 5.0);
+}
+
+TEST(Algorithm2, AnUpdateRewritesOnlyTheSliceItReaches) {
+  // 40 intervals with sources alternating above them; one new interval over [20.3, 20.7].
+  constexpr double L = 40.0;
+  EdgeIntervals list;
+  EdgeUpdateReport report;
+  std::vector<Interval> scratch;
+  std::vector<Interval> before;
+  for (int k = 0; k < 40; ++k) before.push_back(make(k, k + 1.0, Vec2(k + 0.5, 1.0 + k % 3), 0.1 * k));
+  list.assign(before);
+  list.insert(make(20.3, 20.7, Vec2(20.5, 0.1), 1.0), L, report, scratch);
+  EXPECT_GE(report.first, 17u);
+  EXPECT_LE(report.last, 25u);
+  const auto after = list.intervals();
+  ASSERT_EQ(after.size(), before.size() + 2) << "interval 20 is cut in three";
+  for (std::size_t i = 0; i < report.first; ++i) EXPECT_EQ(after[i].b0, before[i].b0);
+  for (std::size_t i = report.last; i < after.size(); ++i) EXPECT_EQ(after[i].b0, before[i - 2].b0);
+  EXPECT_NEAR(list.distanceAt(20.5), 1.1, 1e-15);
 }
 
 TEST(Eq1, CandidatesIncludeTheBisector) {
-  const Interval a = make(0.0, kL, Vec2(2.0, 1.0), 0.0, 1);
-  const Interval b = make(0.0, kL, Vec2(8.0, 1.0), 0.0, 2);
+  const Interval a = make(0.0, kL, Vec2(2.0, 1.0), 0.0);
+  const Interval b = make(0.0, kL, Vec2(8.0, 1.0), 0.0);
   double roots[2];
   const int n = equalDistanceCandidates(a, b, 0.0, kL, roots);
   ASSERT_GE(n, 1);

@@ -396,13 +396,9 @@ Interval makeInterval(const IntervalSpec& s, bool incoming, double cursor, doubl
   }
   w.side = s.flags & 1;
   w.origin = -1;
-  const double mid = 0.5 * (w.b0 + w.b1);
-  switch ((s.flags >> 1) & 3) {
-    case 1: w.markPropagated(); break;
-    case 2: w.pb0 = w.b0, w.pb1 = mid; break;
-    case 3: w.pb0 = mid, w.pb1 = w.b1; break;
-    default: break;
-  }
+  // 0: pending; 1: propagated; 2, 3 (once "propagated on one half"): pending, as an interval
+  // grown after its propagation is (an interval carries one pending bit).
+  if (((s.flags >> 1) & 3) == 1) w.markPropagated();
   ok = ok && isFinite(w.source) && std::isfinite(w.sigma);
   return w;
 }
@@ -421,12 +417,10 @@ std::optional<EdgeUpdateCase> makeEdgeUpdateCase(const EdgeUpdateSpec& s) {
     if (w.b0 >= L) break;
     cursor = w.b1;
     if (!ok) continue;
-    w.id = static_cast<std::uint32_t>(c.before.size() + 1);
     c.before.push_back(w);
   }
   bool ok = false;
   c.incoming = makeInterval(s.incoming, true, 0.0, L, nL, unit, c.before, ok);
-  c.incoming.id = static_cast<std::uint32_t>(c.before.size() + 1);
   c.incoming.origin = -2;
   if (!ok) return std::nullopt;
   // Algorithm 2 starts from a list step 6 accepts; a list it rejects tests nothing.
@@ -608,7 +602,6 @@ EdgeUpdateCase parseEdgeUpdateReproducer(std::string_view text) {
       if (!(ls >> announced)) fail("expected the number of intervals");
     } else if (key == "interval") {
       Interval w = readInterval(ls);
-      w.id = static_cast<std::uint32_t>(c.before.size() + 1);
       w.origin = -1;
       c.before.push_back(w);
     } else if (key == "incoming") {
@@ -625,7 +618,6 @@ EdgeUpdateCase parseEdgeUpdateReproducer(std::string_view text) {
     throw InputError("syntax", "'before " + std::to_string(announced) + "' but " +
                                    std::to_string(c.before.size()) + " interval lines");
   }
-  c.incoming.id = static_cast<std::uint32_t>(c.before.size() + 1);
   c.note = "text reproducer: invariant " + invariant + ", branch " + branch;
   return c;
 }
@@ -699,7 +691,7 @@ std::string describeInterval(const Interval& w) {
   std::ostringstream os;
   os << std::setprecision(17) << "[" << w.b0 << ", " << w.b1 << "] s=(" << w.source.x() << ", "
      << w.source.y() << ") sigma=" << w.sigma << " side=" << int(w.side);
-  if (!w.nothingPropagated()) os << " propagated=[" << w.pb0 << ", " << w.pb1 << "]";
+  if (w.fullyPropagated()) os << " propagated";
   return os.str();
 }
 
@@ -951,7 +943,6 @@ Verdict checkEdgeUpdate(const EdgeUpdateCase& c) {
   v.interesting = true;
   EdgeIntervals list;
   list.assign(c.before);
-  IntervalIdSource ids{static_cast<std::uint32_t>(c.before.size() + 2)};
   EdgeUpdateReport report;
   std::vector<Interval> scratch;
   auto caseText = [&] {
@@ -963,7 +954,7 @@ Verdict checkEdgeUpdate(const EdgeUpdateCase& c) {
     return os.str();
   };
   try {
-    list.insert(c.incoming, c.edgeLength, ids, report, scratch);
+    list.insert(c.incoming, c.edgeLength, report, scratch);
   } catch (const InternalError& e) {
     return fail(v, "internal-check", e.what() + caseText());
   } catch (const std::exception& e) {
@@ -993,11 +984,24 @@ Verdict checkEdgeUpdate(const EdgeUpdateCase& c) {
     for (const Interval& b : c.before) known = known || sameFunction(w, b);
     if (!known) return fail(v, "invented-source", "interval " + describeInterval(w) + " has a source no input had" + caseText());
   }
-  for (std::size_t i = 0; i < after.size(); ++i)
-    for (std::size_t j = i + 1; j < after.size(); ++j)
-      if (after[i].id == after[j].id) return fail(v, "ids", "two intervals share id " + std::to_string(after[i].id) + caseText());
-  for (std::uint32_t id : report.toQueue)
-    if (!list.find(id)) return fail(v, "ids", "id " + std::to_string(id) + " to queue is not in the list" + caseText());
+  // Only the slice the report names was rewritten: before and after it the list is the old one,
+  // interval for interval (what makes an update cost O(log n + overlap)).
+  const auto same = [](const Interval& a, const Interval& b) {
+    return a.b0 == b.b0 && a.b1 == b.b1 && a.source == b.source && a.sigma == b.sigma &&
+           a.side == b.side && a.origin == b.origin && a.pending() == b.pending();
+  };
+  if (report.first > report.last || report.last > after.size() ||
+      after.size() - report.last > c.before.size() || report.first > c.before.size()) {
+    return fail(v, "slice", "the rewritten range [" + std::to_string(report.first) + ", " +
+                                std::to_string(report.last) + ") does not fit the lists" + caseText());
+  }
+  for (std::size_t i = 0; i < report.first; ++i)
+    if (!same(after[i], c.before[i]))
+      return fail(v, "slice", "interval " + std::to_string(i) + " before the rewritten range changed" + caseText());
+  const std::size_t tail = after.size() - report.last;
+  for (std::size_t i = 0; i < tail; ++i)
+    if (!same(after[report.last + i], c.before[c.before.size() - tail + i]))
+      return fail(v, "slice", "interval " + std::to_string(report.last + i) + " after the rewritten range changed" + caseText());
   return v;
 }
 
@@ -1788,12 +1792,11 @@ void svgPredicates(const LocalWindow& w, std::ostream& out) {
 void svgEdgeUpdate(const EdgeUpdateCase& c, std::ostream& out) {
   EdgeIntervals list;
   list.assign(c.before);
-  IntervalIdSource ids{static_cast<std::uint32_t>(c.before.size() + 2)};
   EdgeUpdateReport report;
   std::vector<Interval> scratch;
   std::string error;
   try {
-    list.insert(c.incoming, c.edgeLength, ids, report, scratch);
+    list.insert(c.incoming, c.edgeLength, report, scratch);
   } catch (const std::exception& e) {
     error = e.what();
   }

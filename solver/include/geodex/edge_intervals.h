@@ -17,6 +17,7 @@
 #include <cstdint>
 #include <span>
 #include <utility>
+#include <cstddef>
 #include <vector>
 
 #include "geodex/degeneracy.h"
@@ -27,8 +28,9 @@ namespace geodex {
 
 /// What one insertion did, for the solver (which intervals to queue) and the observer.
 struct EdgeUpdateReport {
-  /// Ids of intervals with an unpropagated part whose queue key changed: the solver (re)queues them.
-  std::vector<std::uint32_t> toQueue;
+  /// The index range [first, last) of the list that the update rewrote; the intervals in it with
+  /// Interval::kChanged set are new or changed (the solver queues the pending ones).
+  std::size_t first = 0, last = 0;
   /// Shared endpoints created by an Eq. 1 split: the two neighbours must agree here (D4).
   std::vector<double> eq1Breakpoints;
   /// Ranges of the tiny intervals step 3 removed (D1): there the list takes a neighbour's values
@@ -38,7 +40,7 @@ struct EdgeUpdateReport {
   bool incomingSurvived = false;
   DegeneracyCounters degeneracies;  ///< D1–D4 found in this update
   void clear() {
-    toQueue.clear();
+    first = last = 0;
     eq1Breakpoints.clear();
     removedTiny.clear();
     incomingSurvived = false;
@@ -73,26 +75,25 @@ inline double tinyLengthInList(std::span<const Interval> list, std::size_t i, do
   return tiny;
 }
 
-/// Hands out interval ids unique within a solve.
-struct IntervalIdSource {
-  std::uint32_t next = 1;
-  std::uint32_t operator()() { return next++; }
-};
-
 /// The sorted, non-overlapping intervals of one edge.
 class EdgeIntervals {
  public:
   std::span<const Interval> intervals() const { return list_; }
+  std::span<Interval> intervals() { return list_; }
   bool empty() const { return list_.empty(); }
   void clear() { list_.clear(); }
   /// For tests and the fuzzers: install a list as it is (no checks; verify/ judges it).
   void assign(std::vector<Interval> list) { list_ = std::move(list); }
-  Interval* find(std::uint32_t id);
+  /// The interval covering x (the left one where two meet at x), or nullptr.
+  const Interval* at(double x) const;
+  Interval* at(double x) { return const_cast<Interval*>(std::as_const(*this).at(x)); }
 
-  /// Algorithm 2: merge `incoming` (range within [0, edgeLength], incoming.id fresh) into the
-  /// list. `scratch` is reused between calls to avoid allocation.
-  void insert(const Interval& incoming, double edgeLength, IntervalIdSource& ids,
-              EdgeUpdateReport& report, std::vector<Interval>& scratch);
+  /// Algorithm 2: merge `incoming` (range within [0, edgeLength]) into the list. Only the part
+  /// of the list the incoming range reaches (plus two neighbours on each side, which steps 3–5 may
+  /// touch) is read and rewritten, so an update costs O(log n + overlap), not O(n). `scratch` is
+  /// reused between calls to avoid allocation.
+  void insert(const Interval& incoming, double edgeLength, EdgeUpdateReport& report,
+              std::vector<Interval>& scratch);
 
   /// The smallest distance the list gives at x, or +inf where no interval covers x.
   double distanceAt(double x) const;

@@ -82,16 +82,17 @@ class GeodesicSolver {
 
  private:
   struct QueueEntry {
-    double key;
-    Index edge;  ///< kNoIndex: a pseudo-source event of vertex `id`
-    std::uint32_t id;
+    double key;  ///< the interval's minDistance() when queued, or the vertex's distance
+    double b0;   ///< where the interval started when queued: it identifies the interval
+    Index edge;  ///< kNoIndex: a pseudo-source event of `vertex`
+    Index vertex;
     bool operator>(const QueueEntry& o) const { return key > o.key; }
   };
 
   void reset();
   void seedSource(const ResolvedPoint& p, std::size_t number);
   void addInterval(Index edge, const Interval& w, const Fig6Branch* branch);
-  void pushInterval(Index edge, const Interval& w);
+  Interval* queuedInterval(const QueueEntry& entry);
   void updateVertex(Index v, double d);
   void createPseudoSourceWindows(Index v, double sigma, std::int32_t origin);
   void propagate(Index edge, const Interval& w);
@@ -105,7 +106,6 @@ class GeodesicSolver {
   std::vector<double> vertexDistance_;
   std::vector<ResolvedPoint> sources_;
   std::priority_queue<QueueEntry, std::vector<QueueEntry>, std::greater<>> queue_;
-  IntervalIdSource ids_;
   EdgeUpdateReport report_;
   std::vector<Interval> scratch_, before_;
   DegeneracyCounters counters_;

@@ -5,10 +5,12 @@
 // from edge.vertex[0], y >= 0 its height on the source side) rather than the paper's (d0, d1):
 // the same information, but a distance is σ + |x − s| without first re-deriving s from d0, d1.
 // d0 and d1 are available as functions. τ (the side the source lies on) is `side`.
+//
+// 48 bytes: intervals are most of the solver's memory (4 million of them on an 82K-face
+// icosphere), so there is no id and no queue bookkeeping beyond two bits.
 
 #include <cmath>
 #include <cstdint>
-#include <limits>
 
 #include "geodex/mesh.h"
 
@@ -19,35 +21,23 @@ struct Interval {
   double b1 = 0.0;  ///< range end
   Vec2 source{0.0, 0.0};  ///< unfolded pseudo-source (x along the edge, y >= 0 height)
   double sigma = 0.0;     ///< σ: geodesic length from the real source to the pseudo-source
-  /// τ: the source lies on the side of edge.face[side]; the interval propagates into
-  /// edge.face[1 - side].
-  std::uint8_t side = 0;
   /// What the pseudo-source is, for path tracing: >= 0 a mesh vertex (a saddle or boundary
   /// vertex, or a source vertex), < 0 the real source number -(origin + 1).
   std::int32_t origin = -1;
-  /// Unique within one solve; identifies the interval in the priority queue.
-  std::uint32_t id = 0;
-  /// The part of [b0, b1] already propagated across the face (empty when pb0 > pb1). Algorithm 2
-  /// may grow an interval (step 3 merges a tiny neighbour in, step 4 sews a gap, step 5 merges a
-  /// neighbour with the same source); only the grown part then needs propagating, so growth
-  /// never re-propagates what was done.
-  double pb0 = std::numeric_limits<double>::infinity();
-  double pb1 = -std::numeric_limits<double>::infinity();
-  /// Key of this interval's latest priority-queue entry, rounded to float (the solver's
-  /// bookkeeping, compared only for equality with the key it would push now; -1: none). A float
-  /// keeps the interval at 72 bytes: intervals are most of the solver's memory.
-  float queuedKey = -1.0f;
+  /// τ: the source lies on the side of edge.face[side]; the interval propagates into
+  /// edge.face[1 - side].
+  std::uint8_t side = 0;
+  /// kPending: [b0, b1] still has to be propagated across the face (a new interval, or one that
+  /// Algorithm 2 grew after it was propagated). kChanged: the last edge update created or changed
+  /// this interval, so the solver must give it a fresh queue entry (and then clears the bit).
+  std::uint8_t flags = kPending;
+  static constexpr std::uint8_t kPending = 1;
+  static constexpr std::uint8_t kChanged = 2;
 
-  bool fullyPropagated() const { return pb0 <= b0 && pb1 >= b1; }
-  bool nothingPropagated() const { return pb0 > pb1 || pb1 <= b0 || pb0 >= b1; }
-  void markPropagated() {
-    pb0 = b0;
-    pb1 = b1;
-  }
-  void markUnpropagated() {
-    pb0 = std::numeric_limits<double>::infinity();
-    pb1 = -std::numeric_limits<double>::infinity();
-  }
+  bool pending() const { return (flags & kPending) != 0; }
+  bool fullyPropagated() const { return !pending(); }
+  void markPropagated() { flags &= static_cast<std::uint8_t>(~kPending); }
+  void markPending() { flags |= kPending; }
 
   double distanceAt(double x) const {
     const double dx = x - source.x();
@@ -57,11 +47,12 @@ struct Interval {
   /// would cancel when σ is large.
   double d0() const { return std::hypot(b0 - source.x(), source.y()); }
   double d1() const { return std::hypot(b1 - source.x(), source.y()); }
-  /// Smallest distance over [b0, b1]: the priority-queue key.
-  double minDistance() const {
-    const double x = source.x() < b0 ? b0 : (source.x() > b1 ? b1 : source.x());
-    return distanceAt(x);
+  /// Where on [b0, b1] the distance is smallest (the foot of the source, clamped).
+  double argMinDistance() const {
+    return source.x() < b0 ? b0 : (source.x() > b1 ? b1 : source.x());
   }
+  /// Smallest distance over [b0, b1]: the priority-queue key.
+  double minDistance() const { return distanceAt(argMinDistance()); }
   double length() const { return b1 - b0; }
 };
 
