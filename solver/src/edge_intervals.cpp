@@ -23,6 +23,22 @@ bool incomingWins(const Interval& incoming, const Interval& old, double x) {
 
 void markChanged(Interval& w) { w.flags |= Interval::kChanged; }
 
+// A pending interval keeps its queue entry while its point of smallest distance stays where it
+// was (then so does the key: the distance along an edge is convex). `piece` is cut from or grown
+// out of an interval whose smallest distance was at (x, at).
+void keepOrRequeue(Interval& piece, double x, Interval::MinAt at) {
+  if (piece.pending() && (piece.argMinDistance() != x || piece.minAt() != at)) markChanged(piece);
+}
+
+// Sets w's range (steps 3–5: removal of a tiny neighbour, sewing, merging).
+void setRange(Interval& w, double b0, double b1) {
+  const double x = w.argMinDistance();
+  const Interval::MinAt at = w.minAt();
+  w.b0 = b0;
+  w.b1 = b1;
+  keepOrRequeue(w, x, at);
+}
+
 // w's range grows by a part nothing propagated (a tiny neighbour that was still pending, or half
 // a sewn gap). An interval carries one pending bit, not a propagated sub-range, so a propagated
 // one is propagated again whole; its repeated children tie with the ones it made before and
@@ -30,13 +46,6 @@ void markChanged(Interval& w) { w.flags |= Interval::kChanged; }
 void grewUnpropagated(Interval& w) {
   w.markPending();
   markChanged(w);
-}
-
-// Index of the first interval with b1 >= x, in a sorted, non-overlapping list.
-std::size_t firstEndingAtOrAfter(std::span<const Interval> list, double x) {
-  return static_cast<std::size_t>(
-      std::partition_point(list.begin(), list.end(), [x](const Interval& w) { return w.b1 < x; }) -
-      list.begin());
 }
 
 // ===  Step 2 for one old interval ================================================================
@@ -52,9 +61,10 @@ std::size_t firstEndingAtOrAfter(std::span<const Interval> list, double x) {
 // the source distance many orders above the edge length its coefficients cancel, and a root can
 // be off or missing. A root is taken where the two distances really agree there; otherwise (D4)
 // the change is located by bisection on the exact difference of the two distance functions.
-template <typename NewPiece>
+template <typename NewPiece, typename OldPiece>
 void keepShorter(const Interval& in, const Interval& old, double edgeLength,
-                 EdgeUpdateReport& report, std::vector<Interval>& out, NewPiece&& newPiece) {
+                 EdgeUpdateReport& report, std::vector<Interval>& out, NewPiece&& newPiece,
+                 OldPiece&& oldPiece) {
   const double lo = old.b0, hi = old.b1;
   double sample[5];
   int numSamples = 0;
@@ -90,7 +100,7 @@ void keepShorter(const Interval& in, const Interval& old, double edgeLength,
     if (wins[0]) {
       out.push_back(newPiece(lo, hi));
     } else {
-      out.push_back(old);
+      out.push_back(old);  // as the caller cut it
     }
     return;
   }
@@ -139,7 +149,7 @@ void keepShorter(const Interval& in, const Interval& old, double edgeLength,
       Interval w = old;
       w.b0 = cut[k];
       w.b1 = cut[k + 1];
-      markChanged(w);  // a second piece of a pending interval needs its own queue entry
+      oldPiece(w);
       out.push_back(w);
     }
   }
@@ -147,15 +157,12 @@ void keepShorter(const Interval& in, const Interval& old, double edgeLength,
 
 }  // namespace
 
-const Interval* EdgeIntervals::at(double x) const {
-  const std::size_t i = firstEndingAtOrAfter(list_, x);
-  if (i == list_.size() || list_[i].b0 > x) return nullptr;
-  return &list_[i];
-}
-
 double EdgeIntervals::distanceAt(double x) const {
   double best = std::numeric_limits<double>::infinity();
-  for (std::size_t i = firstEndingAtOrAfter(list_, x); i < list_.size() && list_[i].b0 <= x; ++i)
+  if (list_.empty()) return best;
+  const std::size_t first = partitionFrom(list_, guessIndex(list_.size(), x, list_.back().b1),
+                                          [x](const Interval& w) { return w.b1 < x; });
+  for (std::size_t i = first; i < list_.size() && list_[i].b0 <= x; ++i)
     best = std::min(best, list_[i].distanceAt(x));
   return best;
 }
@@ -225,12 +232,9 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
   //     update left it so), so steps 3–5 can only find something at the changed intervals and
   //     their immediate neighbours; the outer two are read for their ε and left as they are.
   const std::size_t n = list_.size();
-  const std::size_t j0 = static_cast<std::size_t>(
-      std::partition_point(list_.begin(), list_.end(),
-                           [&](const Interval& w) { return w.b1 <= in.b0; }) - list_.begin());
-  const std::size_t j1 = static_cast<std::size_t>(
-      std::partition_point(list_.begin() + static_cast<std::ptrdiff_t>(j0), list_.end(),
-                           [&](const Interval& w) { return w.b0 < in.b1; }) - list_.begin());
+  const std::size_t j0 = partitionFrom(list_, guessIndex(n, in.b0, edgeLength),
+                                       [&](const Interval& w) { return w.b1 <= in.b0; });
+  const std::size_t j1 = partitionFrom(list_, j0, [&](const Interval& w) { return w.b0 < in.b1; });
   const std::size_t s0 = j0 >= 2 ? j0 - 2 : 0;
   const std::size_t s1 = std::min(n, j1 + 2);
 
@@ -257,13 +261,18 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
       out.push_back(w);
       continue;
     }
+    // Every piece cut from w is checked against where w's smallest distance was: the piece that
+    // still has it keeps w's queue entry, the others (when pending) need their own.
+    const double minX = w.argMinDistance();
+    const Interval::MinAt minAt = w.minAt();
+    auto oldPiece = [&](Interval& piece) { keepOrRequeue(piece, minX, minAt); };
     const double overlapTiny = std::max(tinyLength(w, edgeLength), tinyLength(in, edgeLength));
     if (w.b0 < in.b0 && w.b1 - in.b0 < overlapTiny && w.b1 < in.b1) {  // D2 at the new one's start
       ++report.degeneracies[DegeneracyKind::D2];
       const double mid = 0.5 * (in.b0 + w.b1);
       w.b1 = mid;
       in.b0 = cursor = mid;
-      markChanged(w);
+      oldPiece(w);
       out.push_back(w);
       continue;
     }
@@ -272,7 +281,7 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
       const double mid = 0.5 * (in.b1 + w.b0);
       w.b0 = mid;
       in.b1 = mid;
-      markChanged(w);
+      oldPiece(w);
       finishIncoming();
       out.push_back(w);
       continue;
@@ -280,25 +289,25 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
     if (w.b0 < in.b0) {  // 1.3: separate at interb0
       Interval left = w;
       left.b1 = in.b0;
-      markChanged(left);
+      oldPiece(left);
       out.push_back(left);
       w.b0 = in.b0;
-      markChanged(w);
     }
     Interval right = w;
     const bool hasRight = w.b1 > in.b1;
     if (hasRight) {  // 1.4: separate at interb1
       w.b1 = in.b1;
       right.b0 = in.b1;
-      markChanged(right);
-      markChanged(w);
+      oldPiece(right);
     }
     if (w.b0 > cursor) out.push_back(newPiece(cursor, w.b0));  // a gap: the new one's
     cursor = w.b1;
     if (sameSource(in, w, edgeLength)) {  // the same geodesic arriving again: keep the old
+      oldPiece(w);
       out.push_back(w);
     } else {
-      keepShorter(in, w, edgeLength, report, out, newPiece);
+      oldPiece(w);  // as cut by step 1; keepShorter may cut it further
+      keepShorter(in, w, edgeLength, report, out, newPiece, oldPiece);
     }
     if (hasRight) {
       incomingDone = true;
@@ -307,28 +316,33 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
   }
   finishIncoming();
 
-  std::vector<Interval>& L = out;
+  // Steps 3–5 work on the buffer through a raw pointer and a count: writes to the intervals'
+  // one-byte fields may alias anything, which would make every L.size() and L[i] reload the
+  // vector's own pointers.
+  Interval* const L = out.data();
+  std::size_t m = out.size();
   const bool atFront = s0 == 0, atBack = s1 == n;
 
   // --- Step 3: remove tiny intervals (D1), merging each into a neighbour that touches it. A
   //     neighbour grown this way may itself still be tiny next to a coarser one: repeat until
-  //     nothing is (each pass removes at least one interval, so this ends).
+  //     nothing is (each pass removes at least one interval, so this ends). An interval's ε
+  //     depends on its pseudo-source only, which merging does not change.
   for (bool removed = true; removed;) {
     removed = false;
     std::size_t w = 0;
-    for (std::size_t r = 0; r < L.size(); ++r) {
+    double tinyKept = 0.0;                            // ε of L[w − 1]
+    double tinyHere = m > 0 ? tinyLength(L[0], edgeLength) : 0.0;  // ε of L[r]
+    for (std::size_t r = 0; r < m; ++r) {
+      const double tinyNext = r + 1 < m ? tinyLength(L[r + 1], edgeLength) : 0.0;
       // ε against the neighbours L[r] will have: the last one kept (L[w − 1]) and the next.
-      double tiny = tinyLength(L[r], edgeLength);
-      if (w > 0) {
-        const double t = tinyLength(L[w - 1], edgeLength);
-        if (L[w - 1].b1 >= L[r].b0 - t) tiny = std::max(tiny, t);
-      }
-      if (r + 1 < L.size()) {
-        const double t = tinyLength(L[r + 1], edgeLength);
-        if (L[r + 1].b0 <= L[r].b1 + t) tiny = std::max(tiny, t);
-      }
+      double tiny = tinyHere;
+      if (w > 0 && L[w - 1].b1 >= L[r].b0 - tinyKept) tiny = std::max(tiny, tinyKept);
+      if (r + 1 < m && L[r + 1].b0 <= L[r].b1 + tinyNext) tiny = std::max(tiny, tinyNext);
       if (L[r].length() >= tiny) {
-        L[w++] = L[r];
+        if (w != r) L[w] = L[r];
+        ++w;
+        tinyKept = tinyHere;
+        tinyHere = tinyNext;
         continue;
       }
       removed = true;
@@ -339,24 +353,24 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
       // leave a sliver as thin as before beside the coarse one. Between equal scales, prefer the
       // one that needs no second propagation (a pending one for a pending sliver).
       const bool prevTouches = w > 0 && L[w - 1].b1 >= t.b0 - tiny;
-      const bool nextTouches = r + 1 < L.size() && L[r + 1].b0 <= t.b1 + tiny;
+      const bool nextTouches = r + 1 < m && L[r + 1].b0 <= t.b1 + tiny;
       bool intoNext = nextTouches && !prevTouches;
       if (nextTouches && prevTouches) {
-        const double tn = tinyLength(L[r + 1], edgeLength), tp = tinyLength(L[w - 1], edgeLength);
-        intoNext = tn > tp || (tn == tp && t.pending() && L[r + 1].pending() && !L[w - 1].pending());
+        intoNext = tinyNext > tinyKept ||
+                   (tinyNext == tinyKept && t.pending() && L[r + 1].pending() && !L[w - 1].pending());
       }
       if (intoNext || prevTouches) {
         Interval& into = intoNext ? L[r + 1] : L[w - 1];
         if (intoNext) {
-          into.b0 = std::min(into.b0, t.b0);
+          setRange(into, std::min(into.b0, t.b0), into.b1);
         } else {
-          into.b1 = std::max(into.b1, t.b1);
+          setRange(into, into.b0, std::max(into.b1, t.b1));
         }
-        markChanged(into);
         if (t.pending() && !into.pending()) grewUnpropagated(into);
       }
+      tinyHere = tinyNext;  // L[w − 1] and its ε stay the last kept
     }
-    L.resize(w);
+    m = w;
   }
 
   // --- Step 4: sew gaps shorter than ε (D3); an overlap left here (D2) is resolved at its
@@ -364,21 +378,20 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
   //     move that side's end across the whole gap instead, so the propagated side need not be
   //     propagated again (either way each point of the gap takes a neighbour's value, which is
   //     all step 4 promises). The edge's ends count as neighbours.
-  if (!L.empty()) {
-    if (atFront && L.front().b0 > 0.0 && L.front().b0 < tinyLength(L.front(), edgeLength)) {
+  if (m > 0) {
+    Interval& front = L[0];
+    if (atFront && front.b0 > 0.0 && front.b0 < tinyLength(front, edgeLength)) {
       ++report.degeneracies[DegeneracyKind::D3];
-      L.front().b0 = 0.0;
-      markChanged(L.front());
-      if (!L.front().pending()) grewUnpropagated(L.front());
+      if (!front.pending()) grewUnpropagated(front);
+      setRange(front, 0.0, front.b1);
     }
-    if (atBack && L.back().b1 < edgeLength &&
-        edgeLength - L.back().b1 < tinyLength(L.back(), edgeLength)) {
+    Interval& back = L[m - 1];
+    if (atBack && back.b1 < edgeLength && edgeLength - back.b1 < tinyLength(back, edgeLength)) {
       ++report.degeneracies[DegeneracyKind::D3];
-      L.back().b1 = edgeLength;
-      markChanged(L.back());
-      if (!L.back().pending()) grewUnpropagated(L.back());
+      if (!back.pending()) grewUnpropagated(back);
+      setRange(back, back.b0, edgeLength);
     }
-    for (std::size_t k = 0; k + 1 < L.size(); ++k) {
+    for (std::size_t k = 0; k + 1 < m; ++k) {
       Interval& p = L[k];
       Interval& q = L[k + 1];
       const double gap = q.b0 - p.b1;
@@ -391,23 +404,23 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
         if (gap >= std::max(tiny, shadow)) continue;
         ++report.degeneracies[DegeneracyKind::D3];
         if (p.pending() && !q.pending()) {
-          p.b1 = q.b0;
+          setRange(p, p.b0, q.b0);
         } else if (q.pending() && !p.pending()) {
-          q.b0 = p.b1;
+          setRange(q, p.b1, q.b1);
         } else {
           const double mid = 0.5 * (p.b1 + q.b0);
-          p.b1 = q.b0 = mid;
           if (!p.pending()) grewUnpropagated(p);
           if (!q.pending()) grewUnpropagated(q);
+          setRange(p, p.b0, mid);
+          setRange(q, mid, q.b1);
         }
       } else {
         if (gap <= -tiny) continue;
         ++report.degeneracies[DegeneracyKind::D2];
         const double mid = 0.5 * (p.b1 + q.b0);
-        p.b1 = q.b0 = mid;
+        setRange(p, p.b0, mid);
+        setRange(q, mid, q.b1);
       }
-      markChanged(p);
-      markChanged(q);
     }
   }
 
@@ -415,25 +428,27 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
   //     merging a propagated interval into a pending one would propagate it a second time).
   {
     std::size_t w = 0;
-    for (std::size_t r = 0; r < L.size(); ++r) {
+    for (std::size_t r = 0; r < m; ++r) {
       if (w > 0 && L[w - 1].b1 == L[r].b0 && L[w - 1].pending() == L[r].pending() &&
           sameSource(L[w - 1], L[r], edgeLength)) {
-        L[w - 1].b1 = L[r].b1;
-        L[w - 1].flags |= static_cast<std::uint8_t>(Interval::kChanged | (L[r].flags & kFromIncoming));
+        setRange(L[w - 1], L[w - 1].b0, L[r].b1);
+        L[w - 1].flags |= static_cast<std::uint8_t>(L[r].flags & kFromIncoming);
         continue;
       }
-      L[w++] = L[r];
+      if (w != r) L[w] = L[r];
+      ++w;
     }
-    L.resize(w);
+    m = w;
   }
 
-  for (Interval& w : L) {
-    if (w.flags & kFromIncoming) report.incomingSurvived = true;
-    w.flags &= static_cast<std::uint8_t>(~kFromIncoming);
+  for (std::size_t k = 0; k < m; ++k) {
+    if (L[k].flags & kFromIncoming) report.incomingSurvived = true;
+    L[k].flags &= static_cast<std::uint8_t>(~kFromIncoming);
   }
+  out.resize(m);
 
   // --- Splice the rewritten slice back in place of [s0, s1).
-  const std::size_t oldCount = s1 - s0, newCount = L.size();
+  const std::size_t oldCount = s1 - s0, newCount = m;
   if (newCount > oldCount) {
     const std::size_t grow = newCount - oldCount;
     if (list_.size() + grow > list_.capacity()) {
@@ -446,7 +461,7 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
     list_.erase(list_.begin() + static_cast<std::ptrdiff_t>(s0 + newCount),
                 list_.begin() + static_cast<std::ptrdiff_t>(s1));
   }
-  std::copy(L.begin(), L.end(), list_.begin() + static_cast<std::ptrdiff_t>(s0));
+  std::copy(out.begin(), out.end(), list_.begin() + static_cast<std::ptrdiff_t>(s0));
   report.first = s0;
   report.last = s0 + newCount;
   out.clear();

@@ -34,7 +34,7 @@ void GeodesicSolver::reset() {
   edges_.assign(mesh_.numEdges(), EdgeIntervals{});
   vertexDistance_.assign(mesh_.numVertices(), kInfinity);
   sources_.clear();
-  queue_ = {};
+  queue_.clear();
   counters_ = {};
   stats_ = {};
 }
@@ -54,7 +54,7 @@ void GeodesicSolver::solve(std::span<const SurfacePoint> sources, const SolveOpt
   std::uint64_t pops = 0;
   double targetBound = targets.empty() ? -1.0 : kInfinity;
   while (!queue_.empty()) {
-    const QueueEntry top = queue_.top();
+    const QueueEntry top = queue_.top();  // a copy: pushes below may move the entry
     if (top.key > options.stopDistance) {
       radius = options.stopDistance;
       break;
@@ -70,8 +70,8 @@ void GeodesicSolver::solve(std::span<const SurfacePoint> sources, const SolveOpt
     queue_.pop();
     ++pops;
     if (top.edge == kNoIndex) {  // a pseudo-source event; stale if the vertex improved since
-      if (top.key == vertexDistance_[top.vertex]) {
-        createPseudoSourceWindows(top.vertex, top.key, static_cast<std::int32_t>(top.vertex));
+      if (top.key == vertexDistance_[top.vertex()]) {
+        createPseudoSourceWindows(top.vertex(), top.key, static_cast<std::int32_t>(top.vertex()));
       }
       continue;
     }
@@ -214,18 +214,33 @@ void GeodesicSolver::propagate(Index edge, const Interval& w) {
 }
 
 // The interval a queue entry stands for, if the entry is still current: the pending interval
-// that starts where the queued one started and still has the queued key. An interval changed
-// since it was queued has a newer entry, one propagated since needs none; and no other interval
-// can take an entry's place, since two intervals of an edge never start at the same point. (The
-// point of smallest distance would not do as the locator: where two neighbours meet at a tie,
-// both have their smallest distance there, equal.)
+// whose smallest distance is still at the queued point, the same way (its start, its end or
+// inside: then only one interval of the edge can have it there), and still the queued key.
+// An interval whose smallest distance moved has a newer entry; one propagated since needs none.
+// (The point alone would not do: where two neighbours meet at a tie, both can have their
+// smallest distance there, equal.)
 Interval* GeodesicSolver::queuedInterval(const QueueEntry& entry) {
-  const std::span<Interval> list = edges_[entry.edge].intervals();
-  const auto it = std::partition_point(list.begin(), list.end(),
-                                       [&](const Interval& w) { return w.b0 < entry.b0; });
-  if (it == list.end() || it->b0 != entry.b0 || !it->pending() || it->minDistance() != entry.key)
+  EdgeIntervals& edge = edges_[entry.edge];
+  const std::span<const Interval> list = std::as_const(edge).intervals();
+  const double x = entry.x;
+  const Interval::MinAt at = entry.minAt();
+  std::size_t i = 0;
+  switch (at) {
+    case Interval::MinAt::Start:
+      i = partitionFrom(list, entry.hint(), [x](const Interval& w) { return w.b0 < x; });
+      break;
+    case Interval::MinAt::End:
+      i = partitionFrom(list, entry.hint(), [x](const Interval& w) { return w.b1 < x; });
+      break;
+    case Interval::MinAt::Inside:
+      i = partitionFrom(list, entry.hint(), [x](const Interval& w) { return w.b1 <= x; });
+      break;
+  }
+  if (i == list.size()) return nullptr;
+  Interval& w = edge.intervals()[i];
+  if (!w.pending() || w.argMinDistance() != x || w.minAt() != at || w.minDistance() != entry.key)
     return nullptr;
-  return &*it;
+  return &w;
 }
 
 // ===  Edge updates and vertex distances ==========================================================
@@ -237,14 +252,14 @@ void GeodesicSolver::addInterval(Index edge, const Interval& w, const Fig6Branch
   list.insert(w, length, report_, scratch_);
   for (std::size_t k = 0; k < kNumDegeneracyKinds; ++k) counters_.count[k] += report_.degeneracies.count[k];
 
-  // A fresh queue entry for every new or changed interval still to be propagated; entries made
-  // for it before are recognised as stale when popped (queuedInterval).
+  // A fresh queue entry for every pending interval that is new or whose smallest distance moved;
+  // entries made for it before are recognised as stale when popped (queuedInterval).
   const std::span<Interval> all = list.intervals();
   for (std::size_t i = report_.first; i < report_.last; ++i) {
     Interval& iv = all[i];
     if (!(iv.flags & Interval::kChanged)) continue;
     iv.flags &= static_cast<std::uint8_t>(~Interval::kChanged);
-    if (iv.pending()) queue_.push({iv.minDistance(), iv.b0, edge, kNoIndex});
+    if (iv.pending()) queue_.push(QueueEntry::interval(iv, edge, i));
   }
   const auto intervals = list.intervals();
   if (!intervals.empty()) {
@@ -262,7 +277,7 @@ void GeodesicSolver::updateVertex(Index v, double d) {
   const double bar = current == kInfinity ? kInfinity : current - tol::kTieRel * current;
   if (!(d < bar)) return;
   current = d;
-  if (mesh_.isPseudoSourceVertex(v)) queue_.push({d, 0.0, kNoIndex, v});
+  if (mesh_.isPseudoSourceVertex(v)) queue_.push(QueueEntry::pseudoSource(v, d));
 }
 
 void GeodesicSolver::finish(const SolveOptions& options, double radius) {

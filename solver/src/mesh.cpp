@@ -106,6 +106,7 @@ Mesh::Mesh(TriangleSoup soup) : soup_(std::move(soup)) {
     for (std::size_t k = i; k < j; ++k) faceEdges_[half[k].face][half[k].local] = e;
     i = j;
   }
+  sortEdgesAlongSpace();
 
   // ===  Face frames and corner angles ===========================================================
   frames_.resize(3 * nf);
@@ -221,6 +222,59 @@ Mesh::Mesh(TriangleSoup soup) : soup_(std::move(soup)) {
     }
     bboxDiagonal_ = (hi - lo).norm();
   }
+}
+
+namespace {
+
+// Interleaves the low 21 bits of x, y, z (a Morton, or Z-order, code).
+std::uint64_t mortonCode(std::uint32_t x, std::uint32_t y, std::uint32_t z) {
+  auto spread = [](std::uint64_t v) {
+    v &= 0x1fffff;
+    v = (v | v << 32) & 0x1f00000000ffffULL;
+    v = (v | v << 16) & 0x1f0000ff0000ffULL;
+    v = (v | v << 8) & 0x100f00f00f00f00fULL;
+    v = (v | v << 4) & 0x10c30c30c30c30c3ULL;
+    v = (v | v << 2) & 0x1249249249249249ULL;
+    return v;
+  };
+  return spread(x) | spread(y) << 1 | spread(z) << 2;
+}
+
+}  // namespace
+
+// Edges numbered along a Z-order curve through their midpoints: the wavefront sweeps space, and
+// with this order the interval lists, edge records and frames it touches at one time lie close
+// together in memory (on an 82K-face icosphere the solve spent a sixth of its time waiting for
+// the first read of a popped interval's list). Edge numbers are internal: callers name edges by
+// their vertices.
+void Mesh::sortEdgesAlongSpace() {
+  const auto& P = soup_.positions;
+  if (edges_.empty()) return;
+  Vec3 lo = P[edges_[0].vertex[0]], hi = lo;
+  for (const Edge& e : edges_)
+    for (Index v : e.vertex) {
+      lo = lo.cwiseMin(P[v]);
+      hi = hi.cwiseMax(P[v]);
+    }
+  const Vec3 extent = (hi - lo).cwiseMax(Vec3::Constant(1e-300));
+  std::vector<std::pair<std::uint64_t, Index>> order(edges_.size());
+  for (Index e = 0; e < edges_.size(); ++e) {
+    const Vec3 m = 0.5 * (P[edges_[e].vertex[0]] + P[edges_[e].vertex[1]]);
+    const Vec3 q = ((m - lo).cwiseQuotient(extent) * 2097151.0).cwiseMax(0.0).cwiseMin(2097151.0);
+    order[e] = {mortonCode(static_cast<std::uint32_t>(q.x()), static_cast<std::uint32_t>(q.y()),
+                           static_cast<std::uint32_t>(q.z())),
+                e};
+  }
+  std::sort(order.begin(), order.end());
+  std::vector<Index> newIndex(edges_.size());
+  std::vector<Edge> sorted(edges_.size());
+  for (Index k = 0; k < order.size(); ++k) {
+    newIndex[order[k].second] = k;
+    sorted[k] = edges_[order[k].second];
+  }
+  edges_ = std::move(sorted);
+  for (auto& fe : faceEdges_)
+    for (Index& e : fe) e = newIndex[e];
 }
 
 Index Mesh::findEdge(Index a, Index b) const {

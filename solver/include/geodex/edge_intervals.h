@@ -75,6 +75,52 @@ inline double tinyLengthInList(std::span<const Interval> list, std::size_t i, do
   return tiny;
 }
 
+/// The first index i of `list` with !before(list[i]), where `before` holds on a prefix of the list
+/// (a sorted, non-overlapping list: e.g. "ends before x"). The search starts at `guess` and
+/// gallops outwards: it reads a cache line or two when the guess is close, O(log n) lines in any
+/// case. (A binary search from the middle misses the cache at each of its steps; on an edge of 32
+/// intervals that was most of finding one.)
+template <typename Before>
+std::size_t partitionFrom(std::span<const Interval> list, std::size_t guess, Before before) {
+  const std::size_t n = list.size();
+  if (guess > n) guess = n;
+  std::size_t lo = 0, hi = n;  // the answer is in [lo, hi]
+  if (guess < n && before(list[guess])) {
+    lo = guess + 1;
+    for (std::size_t step = 1;; step *= 2) {
+      const std::size_t probe = guess + step;
+      if (probe >= n) break;
+      if (!before(list[probe])) {
+        hi = probe;
+        break;
+      }
+      lo = probe + 1;
+    }
+  } else {
+    hi = guess;
+    for (std::size_t step = 1; step <= guess; step *= 2) {
+      const std::size_t probe = guess - step;
+      if (before(list[probe])) {
+        lo = probe + 1;
+        break;
+      }
+      hi = probe;
+    }
+  }
+  return static_cast<std::size_t>(
+      std::partition_point(list.begin() + static_cast<std::ptrdiff_t>(lo),
+                           list.begin() + static_cast<std::ptrdiff_t>(hi), before) -
+      list.begin());
+}
+
+/// Where in a list of n intervals on an edge of length L the one at x probably is: intervals
+/// spread along their edge, so the fraction x / L of the way through the list.
+inline std::size_t guessIndex(std::size_t n, double x, double edgeLength) {
+  if (n == 0 || !(x > 0.0)) return 0;
+  const double f = x / edgeLength * static_cast<double>(n);
+  return f >= static_cast<double>(n) ? n - 1 : static_cast<std::size_t>(f);
+}
+
 /// The sorted, non-overlapping intervals of one edge.
 class EdgeIntervals {
  public:
@@ -84,9 +130,6 @@ class EdgeIntervals {
   void clear() { list_.clear(); }
   /// For tests and the fuzzers: install a list as it is (no checks; verify/ judges it).
   void assign(std::vector<Interval> list) { list_ = std::move(list); }
-  /// The interval covering x (the left one where two meet at x), or nullptr.
-  const Interval* at(double x) const;
-  Interval* at(double x) { return const_cast<Interval*>(std::as_const(*this).at(x)); }
 
   /// Algorithm 2: merge `incoming` (range within [0, edgeLength]) into the list. Only the part
   /// of the list the incoming range reaches (plus two neighbours on each side, which steps 3–5 may

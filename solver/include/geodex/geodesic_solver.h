@@ -11,7 +11,6 @@
 //   GeodesicPath p = solver.path(SurfacePoint::atVertex(42));
 
 #include <limits>
-#include <queue>
 #include <span>
 #include <vector>
 
@@ -19,6 +18,7 @@
 #include "geodex/edge_intervals.h"
 #include "geodex/mesh.h"
 #include "geodex/observer.h"
+#include "geodex/radix_heap.h"
 #include "geodex/surface_point.h"
 
 namespace geodex {
@@ -83,10 +83,22 @@ class GeodesicSolver {
  private:
   struct QueueEntry {
     double key;  ///< the interval's minDistance() when queued, or the vertex's distance
-    double b0;   ///< where the interval started when queued: it identifies the interval
+    double x;    ///< where the interval had it (argMinDistance())
     Index edge;  ///< kNoIndex: a pseudo-source event of `vertex`
-    Index vertex;
-    bool operator>(const QueueEntry& o) const { return key > o.key; }
+    /// Interval: its index in the edge's list when queued (where to look first), and in the top
+    /// two bits its minAt(). Pseudo-source event: the vertex.
+    std::uint32_t packed;
+
+    static QueueEntry interval(const Interval& w, Index edge, std::size_t index) {
+      return {w.minDistance(), w.argMinDistance(), edge,
+              static_cast<std::uint32_t>(std::min<std::size_t>(index, kHintMask)) |
+                  (static_cast<std::uint32_t>(w.minAt()) << 30)};
+    }
+    static QueueEntry pseudoSource(Index v, double d) { return {d, 0.0, kNoIndex, v}; }
+    std::size_t hint() const { return packed & kHintMask; }
+    Interval::MinAt minAt() const { return static_cast<Interval::MinAt>(packed >> 30); }
+    Index vertex() const { return packed; }
+    static constexpr std::uint32_t kHintMask = (1u << 30) - 1;
   };
 
   void reset();
@@ -105,7 +117,7 @@ class GeodesicSolver {
   std::vector<EdgeIntervals> edges_;
   std::vector<double> vertexDistance_;
   std::vector<ResolvedPoint> sources_;
-  std::priority_queue<QueueEntry, std::vector<QueueEntry>, std::greater<>> queue_;
+  RadixHeap<QueueEntry> queue_;
   EdgeUpdateReport report_;
   std::vector<Interval> scratch_, before_;
   DegeneracyCounters counters_;

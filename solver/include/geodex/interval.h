@@ -28,8 +28,10 @@ struct Interval {
   /// edge.face[1 - side].
   std::uint8_t side = 0;
   /// kPending: [b0, b1] still has to be propagated across the face (a new interval, or one that
-  /// Algorithm 2 grew after it was propagated). kChanged: the last edge update created or changed
-  /// this interval, so the solver must give it a fresh queue entry (and then clears the bit).
+  /// Algorithm 2 grew after it was propagated). kChanged: the last edge update created this
+  /// interval, or moved its point of smallest distance (argMinDistance, minAt), so the solver
+  /// must give it a fresh queue entry (and then clears the bit). Trimming an interval elsewhere
+  /// keeps its queue entry: its key, the smallest distance, is where it was.
   std::uint8_t flags = kPending;
   static constexpr std::uint8_t kPending = 1;
   static constexpr std::uint8_t kChanged = 2;
@@ -50,6 +52,14 @@ struct Interval {
   /// Where on [b0, b1] the distance is smallest (the foot of the source, clamped).
   double argMinDistance() const {
     return source.x() < b0 ? b0 : (source.x() > b1 ? b1 : source.x());
+  }
+  /// Whether argMinDistance() is the start, the end or inside: with it, that point names the
+  /// interval uniquely among its edge's (two intervals can meet at a point, but only one starts
+  /// and one ends there). The solver's queue entries find their interval this way.
+  enum class MinAt : std::uint8_t { Start, Inside, End };
+  MinAt minAt() const {
+    const double x = argMinDistance();
+    return x == b0 ? MinAt::Start : (x == b1 ? MinAt::End : MinAt::Inside);
   }
   /// Smallest distance over [b0, b1]: the priority-queue key.
   double minDistance() const { return distanceAt(argMinDistance()); }

@@ -110,6 +110,8 @@ class Mesh {
   const TriangleSoup& soup() const { return soup_; }
 
  private:
+  void sortEdgesAlongSpace();
+
   TriangleSoup soup_;
   std::vector<Edge> edges_;
   std::vector<std::array<Index, 3>> faceEdges_;
