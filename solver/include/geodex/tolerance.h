@@ -85,6 +85,18 @@ inline constexpr double kSnapParam = 1e-12;
 /// already 2e-9, far above ε × edge length.
 inline constexpr double kRoundingRel = 1e-14;
 
+/// How well a vertex distance can agree with what an incident edge gives there (the end-of-run
+/// step-6 invariant 'vertex-agreement', relative to the distance plus the edge's length, as the
+/// Eq. 1 continuity): kContinuityRel, plus the rounding of positions along the *longest* edge at
+/// the vertex. D(v) is the smallest value any incident edge gives at v, and along an edge of
+/// length L positions are known to ulp(L) ≈ 1e-16 × L only (an unfolded source near the far end
+/// of a 1e6-long edge is 1.2e-10 off): a unit edge beside a 1e6-long one cannot agree with it to
+/// kContinuityRel × (d + 1). Measured: 1.3e-10 on a planar mesh with 1e6-long thin triangles
+/// (tests/property/regressions_test.cpp, case 3), kRoundingRel × 1e6 = 1e-8 covers it.
+inline double vertexAgreementTolerance(double distance, double edgeLength, double longestIncidentEdge) {
+  return kContinuityRel * (distance + edgeLength) + kRoundingRel * longestIncidentEdge;
+}
+
 inline constexpr double kPointwiseMinRel =
     kContinuityRel + 2.0 * kTinyIntervalRel + 2.0 * kFlatVertexAngle + kTieRel;
 
