@@ -30,6 +30,19 @@ void keepOrRequeue(Interval& piece, double x, Interval::MinAt at) {
   if (piece.pending() && (piece.argMinDistance() != x || piece.minAt() != at)) markChanged(piece);
 }
 
+// D2: `left` reaches over `right`'s start, they overlap on [lo, hi] by less than ε; returns where
+// they are to meet. Where the two agree there (a rounding overlap at a shared boundary, the usual
+// case) at the midpoint; otherwise the one shorter in the middle keeps the whole overlap: a real
+// overlap, only too thin to split by Eq. 1, must not give the longer distance the half it loses
+// (corpus/fuzz_edge_update/regress/pointwise-min-D2-overlap-midpoint-keeps-larger-distance).
+double overlapMeetingPoint(const Interval& left, const Interval& right, double lo, double hi,
+                           double edgeLength) {
+  const double mid = 0.5 * (lo + hi);
+  const double f = left.distanceAt(mid), g = right.distanceAt(mid);
+  if (std::abs(f - g) <= tol::kContinuityRel * (std::min(f, g) + edgeLength)) return mid;
+  return f < g ? hi : lo;
+}
+
 // Sets w's range (steps 3–5: removal of a tiny neighbour, sewing, merging).
 void setRange(Interval& w, double b0, double b1) {
   const double x = w.argMinDistance();
@@ -217,9 +230,7 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
   // Pieces of the incoming interval carry kFromIncoming until the end of the update, so that
   // report.incomingSurvived can tell whether any of it is left.
   constexpr std::uint8_t kFromIncoming = 4;
-  Interval in = incoming;
-  in.flags = static_cast<std::uint8_t>((incoming.flags & Interval::kPending) | Interval::kChanged |
-                                       kFromIncoming);
+  Interval in;
   auto newPiece = [&](double lo, double hi) {
     Interval w = in;
     w.b0 = lo;
@@ -228,20 +239,28 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
   };
 
   // --- The slice this update reads and rewrites: the old intervals the incoming range reaches,
-  //     and two more on each side. The list is clean outside the incoming range (the previous
+  //     and one more on each side. The list is clean outside the incoming range (the previous
   //     update left it so), so steps 3–5 can only find something at the changed intervals and
-  //     their immediate neighbours; the outer two are read for their ε and left as they are.
+  //     their neighbours. Should they change an outer neighbour (sew a gap to it, merge a tiny
+  //     interval into it, merge it with a piece of the same source), its own neighbour may be
+  //     involved too: the slice is widened and the update done again (about 1 update in 100).
   const std::size_t n = list_.size();
-  const std::size_t j0 = partitionFrom(list_, guessIndex(n, in.b0, edgeLength),
-                                       [&](const Interval& w) { return w.b1 <= in.b0; });
-  const std::size_t j1 = partitionFrom(list_, j0, [&](const Interval& w) { return w.b0 < in.b1; });
-  const std::size_t s0 = j0 >= 2 ? j0 - 2 : 0;
-  const std::size_t s1 = std::min(n, j1 + 2);
+  const std::size_t j0 = partitionFrom(list_, guessIndex(n, incoming.b0, edgeLength),
+                                       [&](const Interval& w) { return w.b1 <= incoming.b0; });
+  const std::size_t j1 =
+      partitionFrom(list_, j0, [&](const Interval& w) { return w.b0 < incoming.b1; });
+  std::size_t s0 = j0 >= 1 ? j0 - 1 : 0;
+  std::size_t s1 = std::min(n, j1 + 1);
+  std::size_t m = 0;
+  for (;;) {
+  in = incoming;
+  in.flags = static_cast<std::uint8_t>((incoming.flags & Interval::kPending) | Interval::kChanged |
+                                       kFromIncoming);
 
   // --- Steps 1 and 2 in one pass over the slice. Step 1 splits each old interval at the new
   //     one's ends, so that each piece is wholly inside or outside it (an overlap shorter than ε
   //     is not split off: it is D2, two intervals intersecting by a rounding error, resolved by
-  //     meeting at the overlap's midpoint). Step 2 keeps, on each piece inside, the shorter of
+  //     overlapMeetingPoint). Step 2 keeps, on each piece inside, the shorter of
   //     the two; the new interval fills what no old interval covered.
   out.clear();
   double cursor = in.b0;     // the incoming range up to here is accounted for
@@ -269,18 +288,18 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
     const double overlapTiny = std::max(tinyLength(w, edgeLength), tinyLength(in, edgeLength));
     if (w.b0 < in.b0 && w.b1 - in.b0 < overlapTiny && w.b1 < in.b1) {  // D2 at the new one's start
       ++report.degeneracies[DegeneracyKind::D2];
-      const double mid = 0.5 * (in.b0 + w.b1);
-      w.b1 = mid;
-      in.b0 = cursor = mid;
+      const double meet = overlapMeetingPoint(w, in, in.b0, w.b1, edgeLength);
+      w.b1 = meet;
+      in.b0 = cursor = meet;
       oldPiece(w);
       out.push_back(w);
       continue;
     }
     if (w.b1 > in.b1 && in.b1 - w.b0 < overlapTiny && w.b0 > in.b0) {  // D2 at the new one's end
       ++report.degeneracies[DegeneracyKind::D2];
-      const double mid = 0.5 * (in.b1 + w.b0);
-      w.b0 = mid;
-      in.b1 = mid;
+      const double meet = overlapMeetingPoint(in, w, w.b0, in.b1, edgeLength);
+      w.b0 = meet;
+      in.b1 = meet;
       oldPiece(w);
       finishIncoming();
       out.push_back(w);
@@ -320,7 +339,7 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
   // one-byte fields may alias anything, which would make every L.size() and L[i] reload the
   // vector's own pointers.
   Interval* const L = out.data();
-  std::size_t m = out.size();
+  m = out.size();
   const bool atFront = s0 == 0, atBack = s1 == n;
 
   // --- Step 3: remove tiny intervals (D1), merging each into a neighbour that touches it. A
@@ -373,8 +392,8 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
     m = w;
   }
 
-  // --- Step 4: sew gaps shorter than ε (D3); an overlap left here (D2) is resolved at its
-  //     midpoint. The paper sews a gap at its midpoint; where only one side is still pending we
+  // --- Step 4: sew gaps shorter than ε (D3); an overlap left here (D2) is resolved as in
+  //     step 1 (overlapMeetingPoint). The paper sews a gap at its midpoint; where only one side is still pending we
   //     move that side's end across the whole gap instead, so the propagated side need not be
   //     propagated again (either way each point of the gap takes a neighbour's value, which is
   //     all step 4 promises). The edge's ends count as neighbours.
@@ -417,9 +436,9 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
       } else {
         if (gap <= -tiny) continue;
         ++report.degeneracies[DegeneracyKind::D2];
-        const double mid = 0.5 * (p.b1 + q.b0);
-        setRange(p, p.b0, mid);
-        setRange(q, mid, q.b1);
+        const double meet = overlapMeetingPoint(p, q, q.b0, p.b1, edgeLength);
+        setRange(p, p.b0, meet);
+        setRange(q, meet, q.b1);
       }
     }
   }
@@ -446,6 +465,18 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
     L[k].flags &= static_cast<std::uint8_t>(~kFromIncoming);
   }
   out.resize(m);
+
+  const auto unchanged = [](const Interval& a, const Interval& b) {
+    return a.b0 == b.b0 && a.b1 == b.b1 && a.source == b.source && a.sigma == b.sigma &&
+           a.pending() == b.pending();
+  };
+  const bool frontKept = s0 == 0 || (m > 0 && unchanged(out.front(), list_[s0]));
+  const bool backKept = s1 == n || (m > 0 && unchanged(out.back(), list_[s1 - 1]));
+  if (frontKept && backKept) break;
+  if (!frontKept) s0 = s0 >= 2 ? s0 - 2 : 0;
+  if (!backKept) s1 = std::min(n, s1 + 2);
+  report.clear();
+  }
 
   // --- Splice the rewritten slice back in place of [s0, s1).
   const std::size_t oldCount = s1 - s0, newCount = m;

@@ -171,6 +171,22 @@ TEST(Algorithm2, D2TinyOverlapMeetsAtTheMidpoint) {
   EXPECT_DOUBLE_EQ(e.list.intervals()[0].b1, 5.0 - overlap / 2);
 }
 
+TEST(Algorithm2, D2RealOverlapGoesToTheShorterInterval) {
+  // Regression (corpus/fuzz_edge_update/regress/pointwise-min-D2-overlap-midpoint-keeps-larger-
+  // distance): the new interval starts 3e-11 before the old one ends, below ε, so it is D2, not
+  // split by Eq. 1. The two are far apart there (2.83 against 4.47): meeting at the midpoint gave
+  // the longer distance half the overlap. The shorter keeps it all.
+  Edge1 e;
+  const Interval old = make(0.0, 4.0, Vec2(2.0, 2.0), 0.0);
+  const Interval in = make(4.0 - 3e-11, kL, Vec2(8.0, 2.0), 0.0);
+  e.insert(old);
+  e.insert(in);
+  EXPECT_EQ(e.report.degeneracies[DegeneracyKind::D2], 1u);
+  ASSERT_EQ(e.list.intervals().size(), 2u);
+  EXPECT_EQ(e.list.intervals()[0].b1, 4.0);
+  EXPECT_NEAR(e.list.distanceAt(4.0 - 1e-11), old.distanceAt(4.0 - 1e-11), 1e-15);
+}
+
 TEST(Algorithm2, D3TinyGapIsSewnAtTheMidpoint) {
   Edge1 e;
   e.insert(make(0.0, 5.0, Vec2(2.0, 1.0), 0.0));
