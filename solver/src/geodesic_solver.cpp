@@ -28,13 +28,30 @@ Interval windowFromPoint(const Mesh& mesh, Index f, Index e, const ResolvedPoint
 
 }  // namespace
 
-GeodesicSolver::GeodesicSolver(const Mesh& mesh) : mesh_(mesh) {}
+// The wavefront queue's bucket width (bucket_queue.h), in median edge lengths: a window's
+// children lie up to an edge beyond it, so with buckets of half an edge the order stays close
+// enough to Dijkstra's that no more windows are made (measured: 0.1% more on bunny00, none on the
+// icosphere), at O(1) per entry. The median, not the mean: a few 1e6-long edges must not make
+// the buckets coarse for all the others.
+constexpr double kQueueBucketEdges = 0.5;
+
+GeodesicSolver::GeodesicSolver(const Mesh& mesh) : mesh_(mesh) {
+  std::vector<double> lengths(mesh_.numEdges());
+  for (Index e = 0; e < mesh_.numEdges(); ++e) lengths[e] = mesh_.edge(e).length;
+  double median = 1.0;
+  if (!lengths.empty()) {
+    std::nth_element(lengths.begin(), lengths.begin() + lengths.size() / 2, lengths.end());
+    median = lengths[lengths.size() / 2];
+  }
+  const double width = kQueueBucketEdges * median;
+  queueBucketWidth_ = width > 0.0 && std::isfinite(width) ? width : 1.0;
+}
 
 void GeodesicSolver::reset() {
   edges_.assign(mesh_.numEdges(), EdgeIntervals{});
   vertexDistance_.assign(mesh_.numVertices(), kInfinity);
   sources_.clear();
-  queue_.clear();
+  queue_.reset(queueBucketWidth_);
   counters_ = {};
   stats_ = {};
 }
@@ -54,21 +71,24 @@ void GeodesicSolver::solve(std::span<const SurfacePoint> sources, const SolveOpt
   std::uint64_t pops = 0;
   double targetBound = targets.empty() ? -1.0 : kInfinity;
   while (!queue_.empty()) {
-    const QueueEntry top = queue_.top();  // a copy: pushes below may move the entry
-    if (top.key > options.stopDistance) {
+    const QueueEntry top = queue_.front();  // a copy: pushes below may move the entry
+    // No queued key is below `bound`: distances up to it are final.
+    const double bound = queue_.lowerBound();
+    if (bound > options.stopDistance) {
       radius = options.stopDistance;
       break;
     }
     if (!targets.empty()) {
       // Distances only decrease, so a bound computed earlier stays an upper bound.
-      if ((pops & 255) == 0 || top.key >= targetBound) targetBound = targetsMaxDistance(targets);
-      if (top.key >= targetBound) {
-        radius = top.key;
+      if ((pops & 255) == 0 || bound >= targetBound) targetBound = targetsMaxDistance(targets);
+      if (bound >= targetBound) {
+        radius = bound;
         break;
       }
     }
     queue_.pop();
     ++pops;
+    if (top.key > options.stopDistance) continue;  // beyond the stop, in the last bucket
     if (top.edge == kNoIndex) {  // a pseudo-source event; stale if the vertex improved since
       if (top.key == vertexDistance_[top.vertex()]) {
         createPseudoSourceWindows(top.vertex(), top.key, static_cast<std::int32_t>(top.vertex()));

@@ -18,7 +18,7 @@
 #include "geodex/edge_intervals.h"
 #include "geodex/mesh.h"
 #include "geodex/observer.h"
-#include "geodex/radix_heap.h"
+#include "geodex/bucket_queue.h"
 #include "geodex/surface_point.h"
 
 namespace geodex {
@@ -117,7 +117,8 @@ class GeodesicSolver {
   std::vector<EdgeIntervals> edges_;
   std::vector<double> vertexDistance_;
   std::vector<ResolvedPoint> sources_;
-  RadixHeap<QueueEntry> queue_;
+  BucketQueue<QueueEntry> queue_;
+  double queueBucketWidth_ = 1.0;
   EdgeUpdateReport report_;
   std::vector<Interval> scratch_, before_;
   DegeneracyCounters counters_;

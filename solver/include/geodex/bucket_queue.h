@@ -1,0 +1,126 @@
+#pragma once
+// The solver's wavefront queue: entries in buckets of keys [k·w, (k+1)·w), taken bucket by bucket
+// in key order and, inside a bucket, first in, first out. Window propagation is correct in any
+// order (an interval that a later, shorter one trims has its children trimmed too), so the strict
+// order of a heap only buys fewer wasted propagations; with buckets of half an edge that waste is
+// nil on the meshes we measured, while a push and a pop cost O(1) (Xu et al. 2015, "fast
+// wavefront propagation", make the same trade). Measured against a radix heap in this place, same
+// run, interleaved: 82K-face icosphere 1765 -> 1290 ms, bunny00 1090 -> 1015 ms, the windows
+// created unchanged to 0.1%.
+//
+// lowerBound(): no key still queued is below it (a key below the current bucket when pushed —
+// rounding, or an interval Algorithm 2 re-opened — is filed in the current bucket).
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "geodex/check.h"
+
+namespace geodex {
+
+/// Entry must have a member `double key` (finite, >= 0).
+template <typename Entry>
+class BucketQueue {
+ public:
+  /// Empties the queue and sets the bucket width (> 0, finite).
+  void reset(double width) {
+    GEODEX_REQUIRE(width > 0.0 && std::isfinite(width), "queue bucket width " << width);
+    ring_.resize(kRing);
+    for (Bucket& b : ring_) {
+      b.entries.clear();
+      b.head = 0;
+    }
+    overflow_.clear();
+    overflowFirst_ = kNever;
+    width_ = width;
+    current_ = 0;
+    size_ = 0;
+  }
+
+  bool empty() const { return size_ == 0; }
+  std::size_t size() const { return size_; }
+  double lowerBound() const { return static_cast<double>(current_) * width_; }
+
+  void push(const Entry& e) {
+    GEODEX_CHECK(e.key >= 0.0, "queue key " << e.key << " is negative");
+    const std::uint64_t k = bucketOf(e.key);
+    if (k - current_ < kRing) {
+      ring_[k & (kRing - 1)].entries.push_back(e);
+    } else {
+      overflow_.push_back(e);
+      overflowFirst_ = std::min(overflowFirst_, k);
+    }
+    ++size_;
+  }
+
+  /// The next entry: the oldest of the first non-empty bucket. The queue must not be empty.
+  const Entry& front() {
+    settle();
+    const Bucket& b = ring_[current_ & (kRing - 1)];
+    return b.entries[b.head];
+  }
+
+  /// Removes front().
+  void pop() {
+    settle();
+    Bucket& b = ring_[current_ & (kRing - 1)];
+    if (++b.head == b.entries.size()) {
+      b.entries.clear();
+      b.head = 0;
+    }
+    --size_;
+  }
+
+ private:
+  static constexpr std::uint64_t kRing = 4096;  // buckets held in the ring; farther keys overflow
+  static constexpr std::uint64_t kNever = ~std::uint64_t{0};
+  struct Bucket {
+    std::vector<Entry> entries;
+    std::size_t head = 0;  ///< entries before it are popped
+  };
+
+  std::uint64_t bucketOf(double key) const {
+    const double b = key / width_;
+    const std::uint64_t k = b < 9.0e18 ? static_cast<std::uint64_t>(b) : std::uint64_t{9000000000000000000u};
+    return k < current_ ? current_ : k;
+  }
+
+  // Moves current_ to the first non-empty bucket, bringing overflow entries into the ring as it
+  // comes to reach them, and jumping to the overflow's first bucket when the ring is empty.
+  void settle() {
+    GEODEX_CHECK(size_ > 0, "front or pop of an empty queue");
+    for (;;) {
+      if (overflowFirst_ - current_ < kRing || size_ == overflow_.size()) refillFromOverflow();
+      if (!ring_[current_ & (kRing - 1)].entries.empty()) return;
+      ++current_;
+    }
+  }
+
+  void refillFromOverflow() {
+    if (size_ == overflow_.size()) current_ = std::max(current_, overflowFirst_);
+    std::size_t kept = 0;
+    std::uint64_t first = kNever;
+    for (const Entry& e : overflow_) {
+      const std::uint64_t k = bucketOf(e.key);
+      if (k - current_ < kRing) {
+        ring_[k & (kRing - 1)].entries.push_back(e);
+      } else {
+        overflow_[kept++] = e;
+        first = std::min(first, k);
+      }
+    }
+    overflow_.resize(kept);
+    overflowFirst_ = first;
+  }
+
+  std::vector<Bucket> ring_;  ///< kRing buckets once reset
+  std::vector<Entry> overflow_;
+  std::uint64_t overflowFirst_ = kNever;  ///< the smallest bucket in the overflow
+  double width_ = 1.0;
+  std::uint64_t current_ = 0;
+  std::size_t size_ = 0;
+};
+
+}  // namespace geodex
