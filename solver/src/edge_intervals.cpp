@@ -93,18 +93,22 @@ void keepShorter(const Interval& in, const Interval& old, double edgeLength,
   sample[numSamples++] = hi;
   std::sort(sample + 1, sample + numSamples - 1);
   bool wins[5];
-  for (int k = 0; k < numSamples; ++k) wins[k] = incomingWins(in, old, sample[k]);
+  double f[5], g[5];  // the incoming and the old distance at each sample
+  for (int k = 0; k < numSamples; ++k) {
+    f[k] = in.distanceAt(sample[k]);
+    g[k] = old.distanceAt(sample[k]);
+    wins[k] = f[k] < g[k] - tol::kTieRel * g[k];  // as incomingWins
+  }
   // Where the two distances agree at an end of the piece up to rounding (both windows through
   // the same point, typically a vertex or a shared boundary ray), the tie there says nothing
   // about the inside: the end takes the verdict of the sample next to it. (Only up to rounding:
   // on a long edge two functions can differ by less than kContinuityRel × the edge length at an
   // end and still cross far inside.)
-  auto agreeAt = [&](double x) {
-    const double g = old.distanceAt(x);
-    return std::abs(in.distanceAt(x) - g) <= tol::kRoundingRel * (g + edgeLength);
+  auto agreeAt = [&](int k) {
+    return std::abs(f[k] - g[k]) <= tol::kRoundingRel * (g[k] + edgeLength);
   };
-  if (wins[0] != wins[1] && agreeAt(lo)) wins[0] = wins[1];
-  if (wins[numSamples - 1] != wins[numSamples - 2] && agreeAt(hi))
+  if (wins[0] != wins[1] && agreeAt(0)) wins[0] = wins[1];
+  if (wins[numSamples - 1] != wins[numSamples - 2] && agreeAt(numSamples - 1))
     wins[numSamples - 1] = wins[numSamples - 2];
 
   bool uniform = true;
@@ -134,8 +138,8 @@ void keepShorter(const Interval& in, const Interval& old, double edgeLength,
     double x = -1.0;
     for (int r = 0; r < numRoots; ++r) {
       if (roots[r] <= a || roots[r] >= b) continue;
-      const double f = in.distanceAt(roots[r]), g = old.distanceAt(roots[r]);
-      if (std::abs(f - g) <= tol::kContinuityRel * (g + edgeLength)) x = roots[r];
+      const double fr = in.distanceAt(roots[r]), gr = old.distanceAt(roots[r]);
+      if (std::abs(fr - gr) <= tol::kContinuityRel * (gr + edgeLength)) x = roots[r];
     }
     if (x < 0.0) {  // no accurate root between two samples with different winners
       double l = a, h = b;
@@ -270,16 +274,17 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
     incomingDone = true;
   };
   for (std::size_t k = s0; k < s1; ++k) {
-    Interval w = list_[k];
-    if (w.b1 <= in.b0) {  // before the incoming range
-      out.push_back(w);
+    const Interval& before = list_[k];
+    if (before.b1 <= in.b0) {  // before the incoming range
+      out.push_back(before);
       continue;
     }
-    if (incomingDone || w.b0 >= in.b1) {  // after it
+    if (incomingDone || before.b0 >= in.b1) {  // after it
       finishIncoming();
-      out.push_back(w);
+      out.push_back(before);
       continue;
     }
+    Interval w = before;
     // Every piece cut from w is checked against where w's smallest distance was: the piece that
     // still has it keeps w's queue entry, the others (when pending) need their own.
     const double minX = w.argMinDistance();
@@ -480,19 +485,20 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
 
   // --- Splice the rewritten slice back in place of [s0, s1).
   const std::size_t oldCount = s1 - s0, newCount = m;
+  const auto at = [&](std::size_t i) { return list_.begin() + static_cast<std::ptrdiff_t>(i); };
   if (newCount > oldCount) {
     const std::size_t grow = newCount - oldCount;
     if (list_.size() + grow > list_.capacity()) {
-      // Grow by a quarter, not the default doubling: the lists are most of the solver's memory
-      // and most edges end with a handful of intervals.
-      list_.reserve(list_.size() + grow + std::max<std::size_t>(2, list_.size() / 4));
+      // To the next size class, a quarter up, not the default doubling: the lists are most of
+      // the solver's memory.
+      list_.reserve(IntervalPool::capacityFor(list_.size() + grow));
     }
-    list_.insert(list_.begin() + static_cast<std::ptrdiff_t>(s1), grow, Interval{});
-  } else if (newCount < oldCount) {
-    list_.erase(list_.begin() + static_cast<std::ptrdiff_t>(s0 + newCount),
-                list_.begin() + static_cast<std::ptrdiff_t>(s1));
+    std::copy(out.begin(), out.begin() + static_cast<std::ptrdiff_t>(oldCount), at(s0));
+    list_.insert(at(s1), out.begin() + static_cast<std::ptrdiff_t>(oldCount), out.end());
+  } else {
+    std::copy(out.begin(), out.end(), at(s0));
+    if (newCount < oldCount) list_.erase(at(s0 + newCount), at(s1));
   }
-  std::copy(out.begin(), out.end(), list_.begin() + static_cast<std::ptrdiff_t>(s0));
   report.first = s0;
   report.last = s0 + newCount;
   out.clear();

@@ -48,7 +48,9 @@ GeodesicSolver::GeodesicSolver(const Mesh& mesh) : mesh_(mesh) {
 }
 
 void GeodesicSolver::reset() {
-  edges_.assign(mesh_.numEdges(), EdgeIntervals{});
+  edges_.clear();  // every list back to the pool, which then starts over
+  pool_.recycle();
+  edges_.assign(mesh_.numEdges(), EdgeIntervals(&pool_));
   vertexDistance_.assign(mesh_.numVertices(), kInfinity);
   sources_.clear();
   queue_.reset(queueBucketWidth_);

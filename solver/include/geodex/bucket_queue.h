@@ -42,6 +42,7 @@ class BucketQueue {
     overflow_.clear();
     overflowFirst_ = kNever;
     width_ = width;
+    perWidth_ = 1.0 / width;
     current_ = 0;
     size_ = 0;
   }
@@ -127,7 +128,7 @@ class BucketQueue {
   }
 
   std::uint64_t bucketOf(double key) const {
-    const double b = key / width_;
+    const double b = key * perWidth_;
     const std::uint64_t k = b < 9.0e18 ? static_cast<std::uint64_t>(b) : std::uint64_t{9000000000000000000u};
     return k < current_ ? current_ : k;
   }
@@ -166,6 +167,7 @@ class BucketQueue {
   std::vector<Entry> overflow_;
   std::uint64_t overflowFirst_ = kNever;  ///< the smallest bucket in the overflow
   double width_ = 1.0;
+  double perWidth_ = 1.0;  ///< 1 / width_ (a division per push was a tenth of pushing)
   std::uint64_t current_ = 0;
   std::size_t size_ = 0;
 };

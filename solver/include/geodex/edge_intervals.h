@@ -22,6 +22,7 @@
 
 #include "geodex/degeneracy.h"
 #include "geodex/interval.h"
+#include "geodex/interval_pool.h"
 #include "geodex/tolerance.h"
 
 namespace geodex {
@@ -124,12 +125,15 @@ inline std::size_t guessIndex(std::size_t n, double x, double edgeLength) {
 /// The sorted, non-overlapping intervals of one edge.
 class EdgeIntervals {
  public:
+  /// A list allocating from `pool` (a solver's), or with operator new when null.
+  explicit EdgeIntervals(IntervalPool* pool = nullptr) : list_(IntervalAllocator<Interval>(pool)) {}
+
   std::span<const Interval> intervals() const { return list_; }
   std::span<Interval> intervals() { return list_; }
   bool empty() const { return list_.empty(); }
   void clear() { list_.clear(); }
   /// For tests and the fuzzers: install a list as it is (no checks; verify/ judges it).
-  void assign(std::vector<Interval> list) { list_ = std::move(list); }
+  void assign(const std::vector<Interval>& list) { list_.assign(list.begin(), list.end()); }
 
   /// Algorithm 2: merge `incoming` (range within [0, edgeLength]) into the list. Only the part
   /// of the list the incoming range reaches (plus two neighbours on each side, which steps 3–5 may
@@ -142,7 +146,7 @@ class EdgeIntervals {
   double distanceAt(double x) const;
 
  private:
-  std::vector<Interval> list_;
+  std::vector<Interval, IntervalAllocator<Interval>> list_;
 };
 
 /// Eq. 1: positions x in (lo, hi) where the two intervals' distance functions are equal, as

@@ -114,6 +114,7 @@ class GeodesicSolver {
 
   const Mesh& mesh_;
   SolverObserver* observer_ = nullptr;
+  IntervalPool pool_;  // before edges_: their lists live in it
   std::vector<EdgeIntervals> edges_;
   std::vector<double> vertexDistance_;
   std::vector<ResolvedPoint> sources_;

@@ -1,0 +1,88 @@
+#include "geodex/interval_pool.h"
+
+#include <algorithm>
+#include <array>
+
+namespace geodex {
+namespace {
+
+constexpr std::size_t kChunk = std::size_t{1} << 16;  // intervals per chunk (3 MB)
+
+// Size classes 1, 2, 3, 4, 5, 6, 7, 8, 10, 12, 15, 18, 22, 27, ... each a quarter above the last,
+// up to one chunk.
+struct SizeClasses {
+  std::array<std::size_t, 64> capacity{};
+  int count = 0;
+  constexpr SizeClasses() {
+    std::size_t c = 1;
+    while (c <= kChunk && count < 64) {
+      capacity[count++] = c;
+      c = std::max(c + 1, c + c / 4);
+    }
+  }
+};
+constexpr SizeClasses kClasses;
+
+}  // namespace
+
+IntervalPool::~IntervalPool() {
+  for (Interval* c : chunks_) ::operator delete(c, std::align_val_t(alignof(Interval)));
+}
+
+int IntervalPool::classOf(std::size_t capacity) {
+  const auto* begin = kClasses.capacity.data();
+  const auto* end = begin + kClasses.count;
+  const auto* it = std::lower_bound(begin, end, capacity);
+  return it != end && *it == capacity ? static_cast<int>(it - begin) : -1;
+}
+
+std::size_t IntervalPool::capacityFor(std::size_t n) {
+  const auto* begin = kClasses.capacity.data();
+  const auto* end = begin + kClasses.count;
+  const auto* it = std::lower_bound(begin, end, n);
+  return it != end ? *it : n;
+}
+
+Interval* IntervalPool::allocate(std::size_t capacity) {
+  const int k = classOf(capacity);
+  if (k < 0) {  // not a size class (a list assigned whole, or longer than a chunk)
+    return static_cast<Interval*>(
+        ::operator new(capacity * sizeof(Interval), std::align_val_t(alignof(Interval))));
+  }
+  if (free_.size() <= static_cast<std::size_t>(k)) free_.resize(static_cast<std::size_t>(k) + 1);
+  std::vector<Interval*>& list = free_[static_cast<std::size_t>(k)];
+  if (!list.empty()) {
+    Interval* p = list.back();
+    list.pop_back();
+    return p;
+  }
+  if (chunks_.empty() || used_ + capacity > kChunk) {  // the rest of this chunk stays unused
+    if (!chunks_.empty()) ++chunk_;
+    if (chunk_ == chunks_.size()) {
+      chunks_.push_back(static_cast<Interval*>(
+          ::operator new(kChunk * sizeof(Interval), std::align_val_t(alignof(Interval)))));
+    }
+    used_ = 0;
+  }
+  Interval* p = chunks_[chunk_] + used_;
+  used_ += capacity;
+  return p;
+}
+
+void IntervalPool::deallocate(Interval* p, std::size_t capacity) {
+  const int k = classOf(capacity);
+  if (k < 0) {
+    ::operator delete(p, std::align_val_t(alignof(Interval)));
+    return;
+  }
+  if (free_.size() <= static_cast<std::size_t>(k)) free_.resize(static_cast<std::size_t>(k) + 1);
+  free_[static_cast<std::size_t>(k)].push_back(p);
+}
+
+void IntervalPool::recycle() {
+  for (auto& list : free_) list.clear();
+  chunk_ = 0;
+  used_ = 0;
+}
+
+}  // namespace geodex
