@@ -38,7 +38,8 @@ std::optional<DegeneracyKind> degeneracyOf(Fig6Branch b) {
 
 double localScale(const LocalWindow& w) {
   const Vec2 v2(w.edgeLength, 0.0);
-  return std::max({w.edgeLength, w.apex.norm(), (w.apex - v2).norm()});
+  return std::sqrt(std::max({w.edgeLength * w.edgeLength, w.apex.squaredNorm(),
+                             (w.apex - v2).squaredNorm()}));
 }
 
 namespace {

@@ -26,8 +26,9 @@ inline Side sideOfRay(const Vec2& a, const Vec2& b, const Vec2& c) {
   const Vec2 u = b - a;
   const Vec2 v = c - b;
   const double z = cross(u, v);
-  const double scale = u.norm() * v.norm();
-  if (std::abs(z) <= tol::kCollinearSin * scale) return Side::Collinear;
+  // |z| <= sin · |u| |v|, squared: no square roots on the solver's hottest path.
+  if (z * z <= tol::kCollinearSin * tol::kCollinearSin * u.squaredNorm() * v.squaredNorm())
+    return Side::Collinear;
   return z > 0.0 ? Side::Left : Side::Right;
 }
 
