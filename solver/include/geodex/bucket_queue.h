@@ -70,6 +70,15 @@ class BucketQueue {
     return b.head->entries[b.headPos];
   }
 
+  /// The entry `ahead` places behind front() in the current bucket, if it is in front()'s page
+  /// (for prefetching what it will need), else nullptr. Call after front().
+  const Entry* peek(std::uint32_t ahead) const {
+    const Bucket& b = ring_[current_ & (kRing - 1)];
+    const std::uint32_t i = b.headPos + ahead;
+    const std::uint32_t end = b.head == b.tail ? b.tailPos : kPageEntries;
+    return i < end ? &b.head->entries[i] : nullptr;
+  }
+
   /// Removes front().
   void pop() {
     settle();

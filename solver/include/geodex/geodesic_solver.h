@@ -105,6 +105,7 @@ class GeodesicSolver {
   void seedSource(const ResolvedPoint& p, std::size_t number);
   void addInterval(Index edge, const Interval& w, const Fig6Branch* branch);
   Interval* queuedInterval(const QueueEntry& entry);
+  void prefetchAhead() const;
   void updateVertex(Index v, double d);
   void createPseudoSourceWindows(Index v, double sigma, std::int32_t origin);
   void propagate(Index edge, const Interval& w);
