@@ -67,6 +67,15 @@ Mesh::Mesh(TriangleSoup soup) : soup_(std::move(soup)) {
                              " and " + std::to_string(t[(k + 1) % 3]) +
                              " are at the same position (weld duplicate vertices first)");
       }
+      const double length = (P[t[(k + 1) % 3]] - P[t[k]]).norm();
+      if (!(length >= tol::kMinEdgeLength && length <= tol::kMaxEdgeLength)) {
+        std::ostringstream os;
+        os << where(soup_, soup_.faceLines, f) << "face " << f << ": edge " << t[k] << "-"
+           << t[(k + 1) % 3] << " has length " << length << ", outside the range ["
+           << tol::kMinEdgeLength << ", " << tol::kMaxEdgeLength
+           << "] geodex can compute with (its squares would under- or overflow); scale the mesh";
+        throw InputError("edge-length-out-of-range", os.str());
+      }
     }
   }
 

@@ -21,6 +21,7 @@
 #include <limits>
 #include <numeric>
 #include <span>
+#include <sstream>
 #include <string_view>
 #include <system_error>
 #include <utility>
@@ -28,6 +29,7 @@
 #include <Eigen/Geometry>
 
 #include "geodex/error.h"
+#include "geodex/tolerance.h"
 
 namespace geodex {
 
@@ -1183,7 +1185,7 @@ void validateMesh(const TriangleSoup& soup, std::vector<MeshIssue>& issues) {
     });
   }
 
-  Finding outOfRange, repeatedIndex, zeroLengthEdge, zeroArea;
+  Finding outOfRange, repeatedIndex, zeroLengthEdge, edgeLengthRange, zeroArea;
   // usable: indices in range and distinct, so everything below may index with them.
   std::vector<std::uint8_t> usable(numFaces, 0);
   std::vector<std::uint8_t> referenced(numVertices, 0);
@@ -1229,6 +1231,24 @@ void validateMesh(const TriangleSoup& soup, std::vector<MeshIssue>& issues) {
       });
       continue;
     }
+    bool lengthsInRange = true;
+    for (int k = 0; k < 3 && lengthsInRange; ++k) {
+      const Index a = t[k];
+      const Index b = t[(k + 1) % 3];
+      const double length = (positions[b] - positions[a]).norm();
+      if (length >= tol::kMinEdgeLength && length <= tol::kMaxEdgeLength) continue;
+      lengthsInRange = false;
+      edgeLengthRange.add([&, a, b, length](bool full) {
+        std::ostringstream os;
+        os << length;
+        return full ? name.atFace(f) + "face " + std::to_string(f) + ": edge " + std::to_string(a) +
+                          "-" + std::to_string(b) + " has length " + os.str() +
+                          ", outside the range geodex can compute with (squares of lengths must "
+                          "neither under- nor overflow); scale the mesh"
+                    : name.face(f) + " with edge " + std::to_string(a) + "-" + std::to_string(b);
+      });
+    }
+    if (!lengthsInRange) continue;
     const Vec3 normal = (positions[t[1]] - positions[t[0]]).cross(positions[t[2]] - positions[t[0]]);
     if (normal.x() == 0.0 && normal.y() == 0.0 && normal.z() == 0.0) {
       zeroArea.add([&](bool full) {
@@ -1439,6 +1459,7 @@ void validateMesh(const TriangleSoup& soup, std::vector<MeshIssue>& issues) {
   outOfRange.report(issues, Severity::Error, "index-out-of-range", "faces");
   repeatedIndex.report(issues, Severity::Error, "repeated-index", "faces");
   zeroLengthEdge.report(issues, Severity::Error, "zero-length-edge", "faces");
+  edgeLengthRange.report(issues, Severity::Error, "edge-length-out-of-range", "faces");
   duplicateFace.report(issues, Severity::Error, "duplicate-face", "duplicates");
   nonManifoldEdge.report(issues, Severity::Error, "non-manifold-edge", "edges");
   zeroArea.report(issues, Severity::Warning, "zero-area-face", "faces");

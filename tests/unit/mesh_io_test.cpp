@@ -582,6 +582,28 @@ TEST(MeshIoValidate, NegativeZeroIsTheSamePosition) {
   expectIssue(issues, "zero-length-edge", Severity::Error, {"face 0", "vertices 0 and 1"});
 }
 
+TEST(MeshIoValidate, EdgeLengthsOutsideTheRangeOfDoublesAreRefusedByName) {
+  // Regression (corpus/*/regress/*denormal-edge-length-underflows-to-zero): distinct positions
+  // 1e-320 apart passed the zero-length test, but the edge's length underflowed to 0 and the
+  // face's angles summed to 0; the solver then failed an internal check. Both the validator and
+  // Mesh refuse such an edge, saying which one and what to do.
+  const auto tiny = validated("v 0 0 0\nv 1e-320 0 0\nv 0 1 0\nf 1 2 3\n");
+  expectIssue(tiny, "edge-length-out-of-range", Severity::Error,
+              {"mem.obj:4:", "face 0", "edge 0-1", "scale the mesh"});
+  const auto huge = validated("v 0 0 0\nv 1e200 0 0\nv 0 1 0\nf 1 2 3\n");
+  expectIssue(huge, "edge-length-out-of-range", Severity::Error, {"face 0", "edge 0-1"});
+  TriangleSoup soup;
+  soup.positions = {Vec3(0, 0, 0), Vec3(1e-320, 0, 0), Vec3(0, 1, 0)};
+  soup.faces = {{0, 1, 2}};
+  try {
+    const Mesh mesh(soup);
+    ADD_FAILURE() << "a 1e-320 edge was accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.kind(), "edge-length-out-of-range");
+    EXPECT_NE(std::string(e.what()).find("edge 0-1"), std::string::npos) << e.what();
+  }
+}
+
 TEST(MeshIoValidate, DuplicateFace) {
   const auto issues = validated(std::string(kTetrahedronObj) + "f 3 2 1\n");
   expectIssue(issues, "duplicate-face", Severity::Error, {"mem.obj:9:", "face 4", "face 0"});

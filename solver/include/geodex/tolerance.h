@@ -67,6 +67,14 @@ inline constexpr double kTieRel = 1e-14;
 inline constexpr double kFlatVertexAngle = 1e-12;
 
 
+/// The range of edge lengths geodex computes with. Not a tolerance but the limit of doubles: the
+/// solver squares lengths and coordinate differences (distances, Eq. 1, cross products), and a
+/// square below ~1e-308 underflows (a 1e-320 edge has length 0 and its face angles sum to 0)
+/// while one above ~1e308 overflows. A mesh with an edge outside this range is refused by name;
+/// scaling it into range is the remedy (distances scale with it).
+inline constexpr double kMinEdgeLength = 1e-150;
+inline constexpr double kMaxEdgeLength = 1e150;
+
 /// Barycentric or edge parameters within this of 0 or 1 snap a source or target onto the
 /// edge or vertex it is on.
 inline constexpr double kSnapParam = 1e-12;
