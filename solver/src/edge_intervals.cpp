@@ -373,6 +373,10 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
       ++report.degeneracies[DegeneracyKind::D1];
       const Interval t = L[r];
       report.removedTiny.emplace_back(t.b0, t.b1);
+      // An Eq. 1 breakpoint at an end of the removed sliver now joins a neighbour that grew over
+      // the sliver to the one beyond, which Eq. 1 never made equal: it is no breakpoint any more
+      // (corpus/fuzz_edge_update/regress/continuous-at-eq1-breakpoint-of-removed-sliver).
+      std::erase_if(report.eq1Breakpoints, [&](double x) { return x == t.b0 || x == t.b1; });
       // Prefer the neighbour with the coarser scale: merging into the same-scale one would only
       // leave a sliver as thin as before beside the coarse one. Between equal scales, prefer the
       // one that needs no second propagation (a pending one for a pending sliver).

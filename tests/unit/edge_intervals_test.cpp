@@ -187,6 +187,31 @@ TEST(Algorithm2, D2RealOverlapGoesToTheShorterInterval) {
   EXPECT_NEAR(e.list.distanceAt(4.0 - 1e-11), old.distanceAt(4.0 - 1e-11), 1e-15);
 }
 
+TEST(Algorithm2, AnEq1BreakpointAtARemovedSliverIsNoLongerABreakpoint) {
+  // Regression (corpus/fuzz_edge_update/regress/continuous-at-eq1-breakpoint-of-removed-sliver):
+  // Eq. 1 splits the short last interval, the piece it gives the incoming one is a sliver (D1),
+  // and the first interval grows over it. Its end is now the Eq. 1 point, but it meets an
+  // interval Eq. 1 never compared it with (1.36e-4 against 2.34e-4 there): the report must not
+  // call that point a breakpoint whose two sides agree.
+  const double L = 6.103515625e-05;
+  EdgeIntervals list;
+  list.assign({make(0.0, 6.1035156246999511e-05, Vec2(0.00012207031250415038, 0.00012207031249584962), 0.0),
+               make(6.1035156246999511e-05, L, Vec2(6.103515625e-05, 6.103515625e-05), 0.00017263349149768717)});
+  EdgeUpdateReport report;
+  std::vector<Interval> scratch;
+  list.insert(make(0.0, L, Vec2(0.0, 0.0), 0.00017263349150062194), L, report, scratch);
+  EXPECT_EQ(report.degeneracies[DegeneracyKind::D1], 1u);
+  const auto after = list.intervals();
+  for (double x : report.eq1Breakpoints) {
+    for (std::size_t i = 0; i + 1 < after.size(); ++i) {
+      if (after[i].b1 != x || after[i + 1].b0 != x) continue;
+      EXPECT_NEAR(after[i].distanceAt(x), after[i + 1].distanceAt(x),
+                  tol::kContinuityRel * (after[i].distanceAt(x) + L))
+          << "intervals " << i << " and " << i + 1 << " meet at breakpoint " << x;
+    }
+  }
+}
+
 TEST(Algorithm2, D3TinyGapIsSewnAtTheMidpoint) {
   Edge1 e;
   e.insert(make(0.0, 5.0, Vec2(2.0, 1.0), 0.0));
