@@ -549,14 +549,14 @@ void regressSeeds() {
   // G2 in a needle face seen by a grazing window: the face (height 8e-11 over its longest edge 14,
   // 5.7e-12 relative: above kFlatFaceRel = 1e-12, so not zero-area) lies entirely within the
   // collinearity tolerance of the almost horizontal rays from s (1.6e-10 below e0, just outside
-  // G1's band). Fig. 6 decides G2 (s, b0, v1 "collinear"): e1 gets nothing, and e2's range
+  // G1's band). Fig. 6 decides G2 (s, b0, v1 "collinear"): e1 got nothing, and e2's range
   // [0, hit(s→b1)] clamps to [0, 0] and is dropped. Yet every ray of the window crosses e1 (the
-  // ray through b0 at t = 0.4): the whole window is lost (propagate.cpp). Found by
-  // fuzz_predicates.
-  regress({FuzzTarget::Predicates, "open-coverage-G2-needle-face-grazing-window-lost",
+  // ray through b0 at t = 0.4): the whole window was lost. Found by fuzz_predicates; fixed: an
+  // ambiguous branch also gives the edge the ray would cross on the other side of v1 (propagate.cpp).
+  regress({FuzzTarget::Predicates, "coverage-G2-needle-face-grazing-window-lost",
            encode(local(8, n(-6), n(0).nudged(10, Nudge::FlatFace), n(2), n(3), n(24), n(0).nudged(-2, Nudge::Coincide))),
            {}},
-          "coverage");
+          "");
   // An edge between distinct positions whose length underflows to 0 (denormal coordinates: the
   // squared length 1e-642 is 0): validateMesh and Mesh tested zero-length edges by comparing
   // positions, so the mesh was accepted with a zero-length edge; windows on it got the range

@@ -115,6 +115,21 @@ TEST(Fig6, ZeroAreaFacePassesThrough) {
   expectChild(r, 1, 2, 0.0, 0.5);
 }
 
+TEST(Fig6, G2InANeedleFaceCoversWhereTheGrazingRaysLeave) {
+  // Regression (corpus/fuzz_predicates/regress/coverage-G2-needle-face-grazing-window-lost): a
+  // needle face (apex (-6, 8e-11) over e0 = [0, 8]) seen by rays that graze it, from a source
+  // far right and 1.6e-10 below. The whole face lies within kCollinearSin of the ray through
+  // b0 = 2, so Fig. 6 says G2, which used to give e1 nothing; but that ray leaves the face
+  // through e1: (2, 0) + m (-22, 1.6e-10) = t (-6, 8e-11) gives m = t / 2, -6t = 2 - 11t, t = 0.4.
+  const auto r = propagateLocal(window(2.0, 3.0, Vec2(24.0, -1.6e-10), Vec2(-6.0, 8e-11), 8.0));
+  EXPECT_EQ(r.branch, Fig6Branch::G2);
+  bool covered = false;
+  for (int k = 0; k < r.numChildren; ++k)
+    covered = covered || (r.children[k].edge == 1 && r.children[k].t0 <= 0.4 + 1e-9 &&
+                          r.children[k].t1 >= 0.4);
+  EXPECT_TRUE(covered) << "no child on e1 covers t = 0.4";
+}
+
 TEST(Fig6, NearCollinearWithinToleranceIsG2AndBeyondIsNot) {
   // Nudge s off the line through b0 and v1 perpendicular to it by δ: a sine of δ/|s-b0|.
   const Vec2 s(0.0, -1.0);
