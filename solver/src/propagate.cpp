@@ -113,6 +113,14 @@ LocalPropagation propagateLocal(const LocalWindow& w) {
 
   const bool b0IsV0 = w.b0 <= coincide;
   const bool b1IsV2 = w.edgeLength - w.b1 <= coincide;
+  // Where the boundary rays leave through e1 and e2. A ray through a corner of the face leaves
+  // exactly there: the ray through b0 = v0 meets e1 at its start, the one through b1 = v2 meets
+  // e2 at its end, whatever its angle. Computed, that crossing is ill-conditioned when the ray
+  // grazes the edge (error ≈ rounding / angle): a ray 1.1e-11 rad off a line of grid edges
+  // through a flat vertex put it 5e-6 short of the vertex, and a far window claimed the stretch
+  // (corpus/fuzz_solver/regress/upper-bound-face-source-2e-11-from-flat-vertex).
+  const auto b0OnE1 = [&] { return b0IsV0 ? 0.0 : pred::rayHitsSegment(s, b0, v0, v1); };
+  const auto b1OnE2 = [&] { return b1IsV2 ? 1.0 : pred::rayHitsSegment(s, b1, v1, v2); };
 
   // (2) s, b0, v1 collinear: the left ray hits v1, so the wedge passes right of v1 onto e2 (G2)
   //     — and when b0 = v0 too, the ray runs along e1 and e1 gets the whole edge (G4).
@@ -126,7 +134,7 @@ LocalPropagation propagateLocal(const LocalWindow& w) {
   const Side sideB0 = pred::sideOfRay(s, b0, v1);
   if (sideB0 == Side::Collinear) {
     LocalPropagation r{b0IsV0 ? Fig6Branch::G4 : Fig6Branch::G2};
-    addChild(r, 2, 0.0, pred::rayHitsSegment(s, b1, v1, v2));
+    addChild(r, 2, 0.0, b1OnE2());
     if (b0IsV0) {
       addChild(r, 1, 0.0, 1.0);
     } else if (const auto t = forwardHit(s, b0, v0, v1); t && (1.0 - *t) * v1.norm() > tiny) {
@@ -139,7 +147,7 @@ LocalPropagation propagateLocal(const LocalWindow& w) {
   const Side sideB1 = pred::sideOfRay(s, b1, v1);
   if (sideB1 == Side::Collinear) {
     LocalPropagation r{b1IsV2 ? Fig6Branch::G5 : Fig6Branch::G3};
-    addChild(r, 1, pred::rayHitsSegment(s, b0, v0, v1), 1.0);
+    addChild(r, 1, b0OnE1(), 1.0);
     if (b1IsV2) {
       addChild(r, 2, 0.0, 1.0);
     } else if (const auto t = forwardHit(s, b1, v1, v2); t && *t * (v2 - v1).norm() > tiny) {
@@ -150,19 +158,19 @@ LocalPropagation propagateLocal(const LocalWindow& w) {
   // (4) v1 left of the ray s→b0: the whole wedge passes right of v1, onto e2 (Fig. 3a).
   if (sideB0 == Side::Left) {
     LocalPropagation r{Fig6Branch::LeftOfWedge};
-    addChild(r, 2, pred::rayHitsSegment(s, b0, v1, v2), pred::rayHitsSegment(s, b1, v1, v2));
+    addChild(r, 2, pred::rayHitsSegment(s, b0, v1, v2), b1OnE2());
     return r;
   }
   // (5) v1 right of the ray s→b1: the whole wedge passes left of v1, onto e1.
   if (sideB1 == Side::Right) {
     LocalPropagation r{Fig6Branch::RightOfWedge};
-    addChild(r, 1, pred::rayHitsSegment(s, b0, v0, v1), pred::rayHitsSegment(s, b1, v0, v1));
+    addChild(r, 1, b0OnE1(), pred::rayHitsSegment(s, b1, v0, v1));
     return r;
   }
   // (6) v1 strictly inside the wedge: e1 up to v1, e2 from v1 (Fig. 3b).
   LocalPropagation r{Fig6Branch::InsideWedge};
-  addChild(r, 1, pred::rayHitsSegment(s, b0, v0, v1), 1.0);
-  addChild(r, 2, 0.0, pred::rayHitsSegment(s, b1, v1, v2));
+  addChild(r, 1, b0OnE1(), 1.0);
+  addChild(r, 2, 0.0, b1OnE2());
   return r;
 }
 

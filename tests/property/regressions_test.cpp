@@ -253,6 +253,9 @@ TEST(SolverRegression, PathFromAVertexBesideLongThinTrianglesStaysOnTheSurface) 
 // it the wedge is 3.6e-6 long. Nothing covers that but a window from the boundary vertex 5
 // (σ = 0.559): edge 1–4 gives 1.059 at vertex 4, whose distance is 0.25. (Distance queries are
 // rescued by D(4) + |4x|.) Without jitter (control) the run is clean.
+// Fixed in propagate.cpp: the face 1-5-4's window starts at vertex 4 (b0 = v0), and the ray
+// through a face corner leaves exactly at that corner; computing its crossing with e1, which it
+// grazes at 1e-11 rad, was what misplaced it. The test name keeps the bug it found.
 TEST(SolverRegression, JitteredFlatVertexLeavesAShadowWiderThanStep4Sews) {
   for (double jitter : {0.0, 1e-11}) {
     SCOPED_TRACE(jitter == 0.0 ? "no jitter" : "jitter 1e-11");

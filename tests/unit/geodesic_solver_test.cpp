@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <numbers>
 
@@ -287,6 +288,35 @@ TEST(SolverApi, PathOnACurvedSurfaceHasTheDistanceAsLength) {
     const GeodesicPath path = solver.path(SurfacePoint::atVertex(v));
     EXPECT_NEAR(path.length, solver.vertexDistances()[v], 1e-9 * (1 + solver.vertexDistances()[v])) << v;
   }
+}
+
+TEST(SolverApi, APointAHairFromAVertexOrEdgeIsSnappedOntoIt) {
+  // Regression (corpus/fuzz_solver/regress/upper-bound-face-source-2e-11-from-flat-vertex): a face
+  // source 2.2e-11 (in barycentrics) from a flat grid vertex was neither coincident with it for
+  // the Fig. 6 predicates nor clear of it, and its windows into the faces around the vertex were
+  // lost (an edge there gave 3.81 at a vertex at distance 2). Such a point is that vertex.
+  const Mesh mesh(verify::gridMesh(2, 2, 2.0, 2.0));  // vertex 4 = (1, 1) in the middle
+  Index f = 0;
+  int corner = -1;
+  for (; f < mesh.numFaces() && corner < 0; ++f)
+    for (int k = 0; k < 3; ++k)
+      if (mesh.face(f)[k] == 4) corner = k;
+  --f;
+  std::array<double, 3> bary{1e-11, 1e-11, 1e-11};
+  bary[static_cast<std::size_t>(corner)] = 1.0 - 2e-11;
+  const ResolvedPoint nearVertex = resolve(mesh, SurfacePoint::inFace(f, bary[0], bary[1], bary[2]));
+  EXPECT_EQ(nearVertex.kind, SurfacePoint::Kind::Vertex);
+  EXPECT_EQ(nearVertex.element, 4u);
+  const double half = 0.5 * (1.0 - 2.2e-11);
+  bary = {half, half, half};
+  bary[static_cast<std::size_t>(corner)] = 2.2e-11;  // a hair from the edge opposite vertex 4
+  const ResolvedPoint nearEdge = resolve(mesh, SurfacePoint::inFace(f, bary[0], bary[1], bary[2]));
+  EXPECT_EQ(nearEdge.kind, SurfacePoint::Kind::Edge);
+  // A point well inside stays where it is.
+  EXPECT_EQ(resolve(mesh, SurfacePoint::inFace(f, 0.2, 0.3, 0.5)).kind, SurfacePoint::Kind::Face);
+  // And the solve from the snapped source is clean and Euclidean (the mesh is planar).
+  const std::vector<double> d = solveChecked(mesh, {SurfacePoint::inFace(f, 2.2e-11, 2.2e-11, 1.0 - 4.4e-11)});
+  (void)d;
 }
 
 TEST(SolverApi, BadSourcesAreRefusedByName) {

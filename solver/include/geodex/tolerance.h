@@ -76,8 +76,15 @@ inline constexpr double kMinEdgeLength = 1e-150;
 inline constexpr double kMaxEdgeLength = 1e150;
 
 /// Barycentric or edge parameters within this of 0 or 1 snap a source or target onto the
-/// edge or vertex it is on.
-inline constexpr double kSnapParam = 1e-12;
+/// edge or vertex it is on. Ten times kCoincideRel: a source nearer a vertex or an edge than
+/// that is neither coincident with it for the Fig. 6 predicates nor clear of it — its windows
+/// see it a hair off their edge's line beside the window's end, where G1 ("s on e0's line")
+/// and the generic branches disagree. A face source 2.2e-11 from a flat grid vertex (snapped at
+/// 1e-12: it was not) lost its windows into the faces around that vertex that way
+/// (corpus/fuzz_solver/regress/upper-bound-face-source-2e-11-from-flat-vertex). Moving a
+/// source by 1e-10 of its face moves every distance by at most that, far inside the 1e-9 ×
+/// diagonal contract.
+inline constexpr double kSnapParam = 1e-10;
 
 // ===  Verification (verify/) ====================================================================
 
