@@ -488,21 +488,23 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
   }
 
   // --- Splice the rewritten slice back in place of [s0, s1).
-  const std::size_t oldCount = s1 - s0, newCount = m;
-  const auto at = [&](std::size_t i) { return list_.begin() + static_cast<std::ptrdiff_t>(i); };
+  const std::size_t oldCount = s1 - s0, newCount = m, oldSize = list_.size();
+  Interval* data = list_.data();
   if (newCount > oldCount) {
-    const std::size_t grow = newCount - oldCount;
-    if (list_.size() + grow > list_.capacity()) {
+    const std::size_t newSize = oldSize + newCount - oldCount;
+    if (newSize > list_.capacity()) {
       // To the next size class, a quarter up, not the default doubling: the lists are most of
       // the solver's memory.
-      list_.reserve(IntervalPool::capacityFor(list_.size() + grow));
+      list_.reserve(IntervalPool::capacityFor(newSize));
     }
-    std::copy(out.begin(), out.begin() + static_cast<std::ptrdiff_t>(oldCount), at(s0));
-    list_.insert(at(s1), out.begin() + static_cast<std::ptrdiff_t>(oldCount), out.end());
-  } else {
-    std::copy(out.begin(), out.end(), at(s0));
-    if (newCount < oldCount) list_.erase(at(s0 + newCount), at(s1));
+    list_.resize(newSize);
+    data = list_.data();
+    std::copy_backward(data + s1, data + oldSize, data + newSize);
+  } else if (newCount < oldCount) {
+    std::copy(data + s1, data + oldSize, data + s0 + newCount);
+    list_.resize(oldSize - (oldCount - newCount));
   }
+  std::copy(out.begin(), out.begin() + static_cast<std::ptrdiff_t>(newCount), data + s0);
   report.first = s0;
   report.last = s0 + newCount;
   out.clear();

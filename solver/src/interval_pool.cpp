@@ -9,19 +9,29 @@ namespace {
 constexpr std::size_t kChunk = std::size_t{1} << 16;  // intervals per chunk (3 MB)
 
 // Size classes 1, 2, 3, 4, 5, 6, 7, 8, 10, 12, 15, 18, 22, 27, ... each a quarter above the last,
-// up to one chunk.
+// up to one chunk; and, for every capacity up to a chunk, the class that holds it (a table: this
+// is asked at every growth of every list).
 struct SizeClasses {
   std::array<std::size_t, 64> capacity{};
   int count = 0;
-  constexpr SizeClasses() {
+  std::vector<std::uint8_t> classFor;  // classFor[n]: the smallest class with capacity >= n
+  SizeClasses() : classFor(kChunk + 1) {
     std::size_t c = 1;
     while (c <= kChunk && count < 64) {
-      capacity[count++] = c;
+      capacity[static_cast<std::size_t>(count++)] = c;
       c = std::max(c + 1, c + c / 4);
+    }
+    std::size_t k = 0;
+    for (std::size_t n = 0; n <= kChunk; ++n) {
+      while (k + 1 < static_cast<std::size_t>(count) && capacity[k] < n) ++k;
+      classFor[n] = static_cast<std::uint8_t>(k);
     }
   }
 };
-constexpr SizeClasses kClasses;
+const SizeClasses& classes() {
+  static const SizeClasses table;
+  return table;
+}
 
 }  // namespace
 
@@ -30,17 +40,15 @@ IntervalPool::~IntervalPool() {
 }
 
 int IntervalPool::classOf(std::size_t capacity) {
-  const auto* begin = kClasses.capacity.data();
-  const auto* end = begin + kClasses.count;
-  const auto* it = std::lower_bound(begin, end, capacity);
-  return it != end && *it == capacity ? static_cast<int>(it - begin) : -1;
+  const SizeClasses& c = classes();
+  if (capacity > kChunk) return -1;
+  const int k = c.classFor[capacity];
+  return c.capacity[static_cast<std::size_t>(k)] == capacity ? k : -1;
 }
 
 std::size_t IntervalPool::capacityFor(std::size_t n) {
-  const auto* begin = kClasses.capacity.data();
-  const auto* end = begin + kClasses.count;
-  const auto* it = std::lower_bound(begin, end, n);
-  return it != end ? *it : n;
+  const SizeClasses& c = classes();
+  return n <= c.capacity[static_cast<std::size_t>(c.count - 1)] ? c.capacity[c.classFor[n]] : n;
 }
 
 Interval* IntervalPool::allocate(std::size_t capacity) {
