@@ -288,7 +288,8 @@ void GeodesicSolver::addInterval(Index edge, const Interval& w, const Fig6Branch
   EdgeIntervals& list = edges_[edge];
   if (observer_ != nullptr) before_.assign(list.intervals().begin(), list.intervals().end());
   list.insert(w, length, report_, scratch_);
-  for (std::size_t k = 0; k < kNumDegeneracyKinds; ++k) counters_.count[k] += report_.degeneracies.count[k];
+  for (DegeneracyKind k : {DegeneracyKind::D1, DegeneracyKind::D2, DegeneracyKind::D3, DegeneracyKind::D4})
+    counters_[k] += report_.degeneracies[k];  // (Algorithm 2 finds only these)
 
   // A fresh queue entry for every pending interval that is new or whose smallest distance moved;
   // entries made for it before are recognised as stale when popped (queuedInterval).
@@ -299,11 +300,15 @@ void GeodesicSolver::addInterval(Index edge, const Interval& w, const Fig6Branch
     iv.flags &= static_cast<std::uint8_t>(~Interval::kChanged);
     if (iv.pending()) queue_.push(QueueEntry::interval(iv, edge, i));
   }
+  // The edge's ends update their vertices' distances, when the update rewrote them (an interval
+  // left as it was gave its value there before).
   const auto intervals = list.intervals();
   if (!intervals.empty()) {
     const Edge& E = mesh_.edge(edge);
-    if (intervals.front().b0 == 0.0) updateVertex(E.vertex[0], intervals.front().distanceAt(0.0));
-    if (intervals.back().b1 == length) updateVertex(E.vertex[1], intervals.back().distanceAt(length));
+    if (report_.first == 0 && intervals.front().b0 == 0.0)
+      updateVertex(E.vertex[0], intervals.front().distanceAt(0.0));
+    if (report_.last == intervals.size() && intervals.back().b1 == length)
+      updateVertex(E.vertex[1], intervals.back().distanceAt(length));
   }
   if (observer_ != nullptr) {
     observer_->onEdgeUpdate({edge, length, before_, w, list.intervals(), report_, branch});
