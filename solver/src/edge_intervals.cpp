@@ -184,6 +184,20 @@ double EdgeIntervals::distanceAt(double x) const {
   return best;
 }
 
+std::size_t EdgeIntervals::closeShadows(double widest, double passed) {
+  std::size_t closed = 0;
+  for (std::size_t k = 0; k + 1 < list_.size(); ++k) {
+    Interval& p = list_[k];
+    Interval& q = list_[k + 1];
+    const double gap = q.b0 - p.b1;
+    if (!(gap > 0.0 && gap < widest)) continue;
+    if (std::max(p.distanceAt(p.b1), q.distanceAt(q.b0)) > passed) continue;
+    p.b1 = q.b0 = 0.5 * (p.b1 + q.b0);
+    ++closed;
+  }
+  return closed;
+}
+
 // ===  Eq. 1 ======================================================================================
 // σa + |x − sa| = σb + |x − sb| for x on the edge line. With c = σb − σa, squaring twice gives
 // A x² + B x + C = 0. Coordinates are shifted to the middle of [lo, hi] first, so that the
@@ -426,7 +440,8 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
       if (gap == 0.0) continue;
       const double tiny = std::max(tinyLength(p, edgeLength), tinyLength(q, edgeLength));
       if (gap > 0.0) {
-        // The shadow a flat vertex leaves grows with the distance (see tol::kFlatVertexAngle).
+        // The shadow a flat vertex leaves grows with the distance (see tol::kFlatVertexAngle;
+        // wider shadows are closed when the wavefront has passed: tol::kShadowSewRel).
         const double shadow =
             tol::kFlatVertexAngle * std::min(p.distanceAt(p.b1), q.distanceAt(q.b0));
         if (gap >= std::max(tiny, shadow)) continue;

@@ -326,6 +326,10 @@ void GeodesicSolver::updateVertex(Index v, double d) {
 void GeodesicSolver::finish(const SolveOptions& options, double radius) {
   stats_.radius = radius;
   const double cutoff = std::min(radius, options.stopDistance);
+  // The wavefront has passed every distance up to the cutoff: a thin gap left there is a shadow
+  // between windows that meet along a ray through a vertex up to rounding (tol::kShadowSewRel).
+  const double widest = tol::kShadowSewRel * mesh_.boundingBoxDiagonal();
+  for (EdgeIntervals& e : edges_) stats_.shadowsClosed += e.closeShadows(widest, cutoff);
   for (Index v = 0; v < mesh_.numVertices(); ++v) {
     if (vertexDistance_[v] > cutoff) vertexDistance_[v] = kInfinity;
   }

@@ -329,6 +329,28 @@ TEST(Algorithm2, AnUpdateRewritesOnlyTheSliceItReaches) {
   EXPECT_NEAR(list.distanceAt(20.5), 1.1, 1e-15);
 }
 
+TEST(Algorithm2, ShadowsLeftWhenTheWavefrontHasPassedAreClosedAtTheirMidpoints) {
+  // Three intervals of one source with gaps of 1e-9 and 1e-6 between them (edge 10, distances
+  // about 3 there): with a widest closable gap of 1e-8, the first closes at its midpoint, the
+  // second stays; with the wavefront passed only up to 1, neither closes.
+  for (double passed : {100.0, 1.0}) {
+    EdgeIntervals list;
+    list.assign({make(0.0, 4.0, Vec2(5.0, 3.0), 0.0), make(4.0 + 1e-9, 7.0, Vec2(5.0, 3.0), 0.0),
+                 make(7.0 + 1e-6, kL, Vec2(5.0, 3.0), 0.0)});
+    const std::size_t closed = list.closeShadows(1e-8, passed);
+    const auto w = list.intervals();
+    if (passed > 3.0) {
+      EXPECT_EQ(closed, 1u);
+      EXPECT_EQ(w[0].b1, w[1].b0);
+      EXPECT_DOUBLE_EQ(w[0].b1, 4.0 + 0.5e-9);
+    } else {
+      EXPECT_EQ(closed, 0u);
+      EXPECT_LT(w[0].b1, w[1].b0);
+    }
+    EXPECT_LT(w[1].b1, w[2].b0) << "a gap wider than the widest closable stays";
+  }
+}
+
 TEST(Eq1, CandidatesIncludeTheBisector) {
   const Interval a = make(0.0, kL, Vec2(2.0, 1.0), 0.0);
   const Interval b = make(0.0, kL, Vec2(8.0, 1.0), 0.0);

@@ -145,6 +145,11 @@ class EdgeIntervals {
   /// The smallest distance the list gives at x, or +inf where no interval covers x.
   double distanceAt(double x) const;
 
+  /// When the wavefront has passed: closes, at their midpoints, the gaps between neighbours
+  /// narrower than `widest` (tol::kShadowSewRel × the bounding-box diagonal) where the distance is
+  /// at most `passed` (beyond it the wavefront may not have arrived). Returns how many it closed.
+  std::size_t closeShadows(double widest, double passed);
+
  private:
   std::vector<Interval, IntervalAllocator<Interval>> list_;
 };

@@ -41,6 +41,8 @@ struct SolveStats {
   std::uint64_t pseudoSourceEvents = 0;  ///< saddle/boundary vertices turned into pseudo-sources
   std::uint64_t maxIntervalsPerEdge = 0;
   std::uint64_t intervalsAtEnd = 0;
+  /// Thin gaps closed once the wavefront had passed (tol::kShadowSewRel; EdgeIntervals::closeShadows).
+  std::uint64_t shadowsClosed = 0;
   double radius = kInfinity;             ///< distances up to this are final (inf: ran to the end)
 };
 

@@ -40,6 +40,26 @@ inline constexpr double kTinyIntervalRel = 1e-11;
 /// closer than this × edge length and their σ differ by less than this × edge length.
 inline constexpr double kSameSourceRel = 1e-11;
 
+/// When the wavefront has passed (the end of a solve), a gap left between two intervals narrower
+/// than this × the mesh's bounding-box diagonal is closed at its midpoint: the shadow left between
+/// windows that, in exact arithmetic, meet along a ray through a vertex. Computed, such a boundary
+/// is off by rounding / (the angle at which its ray crosses the edge it is computed on), and the
+/// two sides' rays then diverge: past a flat vertex, past a near-flat saddle of a CAD mesh whose
+/// coordinates were rounded (anchor_dense.off has 88 vertices 1e-11 .. 1e-10 off 2π,
+/// mannequin-devil.off 180 vertices 1e-9 .. 1e-7 off), between two unfoldings of one
+/// pseudo-source, along a saddle's shadow boundary. Measured: gaps of 1.8e-11, 3.5e-11, 1.1e-10,
+/// 3.9e-10 and 1.1e-9 of the distance (anchor_dense, rotor_small, mannequin-devil).
+/// The width is the accuracy contract itself (1e-9 × the diagonal, issue 2): a point x of a gap
+/// [a, b] closed at its midpoint m takes a neighbour's value f(x), and f and the true distance are
+/// both 1-Lipschitz along the edge with f(a) the true distance at a, so |f(x) − true(x)| <=
+/// 2 (x − a) <= b − a. (The scale is the contract's, not a local length: what bounds the error is
+/// the gap's absolute width.)
+/// Not mid-run, where Algorithm 2 step 4 sews only below ε (kTinyIntervalRel, kFlatVertexAngle):
+/// there a gap may be the start of a saddle's shadow, which widens downstream; closing it with
+/// the direct windows (a tie the saddle's window then cannot break) left the saddle's window out
+/// and the shadow open further on (fandisk.off).
+inline constexpr double kShadowSewRel = 1e-9;
+
 /// D4: the distances of two neighbours at their shared endpoint must agree to this × the
 /// distance there (plus the edge-length term below) after an Eq. 1 split; a larger mismatch
 /// means the quadratic's root was inaccurate (near-double root) and is polished on the exact
@@ -60,10 +80,8 @@ inline constexpr double kTieRel = 1e-14;
 /// pseudo-source (as the reference code does) multiplies the windows per edge by ~15 for nothing.
 /// Pseudo-sources are boundary vertices, non-manifold vertices, and vertices whose angle sum
 /// exceeds 2π + this. A flat vertex can leave a shadow wedge of at most this angle between the
-/// windows passing either side of it; Algorithm 2 step 4 sews gaps up to this × the distance,
-/// which closes that wedge at any distance from the vertex. (Sewing wider gaps, up to 1e-10 ×
-/// the distance, was tried and rejected: a mid-run gap that wide can be real — the wavefront has
-/// not arrived — and extending a window over it is not a path; it opened gaps on fandisk.off.)
+/// windows passing either side of it, and rounding more; Algorithm 2 step 4 sews gaps up to
+/// kShadowSewRel × the distance, which closes that wedge at any distance from the vertex.
 inline constexpr double kFlatVertexAngle = 1e-12;
 
 
@@ -88,12 +106,6 @@ inline constexpr double kSnapParam = 1e-10;
 
 // ===  Verification (verify/) ====================================================================
 
-/// How far an edge's distance function may stray from the exact pointwise minimum of the list
-/// before an update and the incoming interval (Algorithm 2 step 6, full tier), relative to
-/// (distance + edge length). Not a free parameter: it is the sum of what steps 1–5 may move by
-/// contract — a breakpoint left with a mismatch up to kContinuityRel, a tiny interval or gap
-/// (kTinyIntervalRel) absorbed by a neighbour on either side, a flat-vertex shadow sewn
-/// (kFlatVertexAngle × distance), and a tie not taken (kTieRel).
 /// Rounding of one computed distance σ + |x − s|, relative to its value (a few ulps, 2.2e-16
 /// each). A check comparing two computed distances of size D (e.g. the triangle inequality
 /// |d0 − d1| ≤ b1 − b0 of a real source) must allow this × D: with a source 1e7 away one ulp is
@@ -112,7 +124,15 @@ inline double vertexAgreementTolerance(double distance, double edgeLength, doubl
   return kContinuityRel * (distance + edgeLength) + kRoundingRel * longestIncidentEdge;
 }
 
+/// How far an edge's distance function may stray from the exact pointwise minimum of the list
+/// before an update and the incoming interval (Algorithm 2 step 6, full tier), relative to
+/// (distance + edge length). Not a free parameter: it is the sum of what steps 1–5 may move by
+/// contract — a breakpoint left with a mismatch up to kContinuityRel, a tiny interval or gap
+/// (kTinyIntervalRel) absorbed by a neighbour on either side, a flat-vertex shadow sewn
+/// (kFlatVertexAngle × distance), and a tie not taken (kTieRel). (The shadows closed at the end
+/// of a solve, kShadowSewRel, come after the last update it checks.)
 inline constexpr double kPointwiseMinRel =
     kContinuityRel + 2.0 * kTinyIntervalRel + 2.0 * kFlatVertexAngle + kTieRel;
+
 
 }  // namespace geodex::tol
