@@ -1,258 +1,254 @@
-// Geodesic path tracing: from a surface point back to the nearest source, by following, at each
-// step, the window that gives the point its distance, straight across the face towards the
-// window's unfolded pseudo-source, until the pseudo-source itself is reached; a pseudo-source at
-// a saddle or boundary vertex continues from that vertex.
+// Geodesic path tracing: from a surface point back to the nearest source, one face at a time,
+// always taking the step along which the distance field descends.
+//
+// The current point lies on one or more faces (a face point on its face, an edge point on the
+// edge's one or two faces, a vertex on its fan). For each such face g, every way of going on
+// through g is priced, in g unfolded onto one of its edges, with the formula distance() uses for a
+// point inside a face (geodesic_solver.cpp, resolvedDistance):
+//   - across g to a point c of an edge e of g that the point is not on, and on from c along a
+//     window w of e whose source lies beyond e: σ + |c − s'| + |q − c|, q the point and s' w's
+//     source reflected below e, c the point of [b0, b1] nearest the segment q → s' crossing e;
+//   - to a corner u of g, and on from u: D(u) + |u − q| (a pseudo-source, or the path runs
+//     through a vertex or along an edge);
+//   - to a source in g (inside, on an edge or at a corner): |src − q|.
+// The cheapest is taken and the tracer moves to its end. Each step joins two points of one face,
+// so the path lies on the surface by construction: no window is followed out of the face it
+// covers (the old tracer walked from the point towards a window's source and asked whether that
+// source was inside the face, with a tolerance in absolute cross-product units; beside 1e5-long
+// thin triangles it accepted a source 1.58 outside one and cut through the air,
+// tests/property/regressions_test.cpp case 7).
+//
+// Why the steps add up to the distance: a window w of edge e covering c got there through the
+// face beyond e from a window on another edge of that face (propagate.cpp), or from a corner
+// pseudo-source or a source in that face; the edges' distance functions only decreased since
+// (Algorithm 2 keeps the pointwise minimum). So at c some step of the next round costs at most
+// w's value at c, which is the value just paid for minus the step's length: values never grow
+// along the path, and its length is the distance at the target up to the solver's tolerances.
+// The cheapest step at a point is straight on across an edge (the ray of the window giving its
+// distance), so the path bends only where windows end: at pseudo-sources, the corners they start
+// from. A window that passes through a zero-area face (propagate.cpp, passThroughZeroAreaFace)
+// is followed the same way: seen from a point of one edge of such a face, the other two lie on
+// the same line, and the crossing is the same point (a step of length zero along that line).
 
 #include <algorithm>
 #include <cmath>
-#include <optional>
+#include <vector>
 
 #include "geodex/check.h"
 #include "geodex/geodesic_solver.h"
-#include "geodex/predicates.h"
 #include "geodex/tolerance.h"
 
 namespace geodex {
 namespace {
 
-enum class At { Vertex, Edge, Face, Source };
+constexpr std::size_t kNoSource = ~std::size_t{0};
 
-struct State {
-  At at;
-  Index element;  // vertex, edge, face, or source number
-  double x = 0.0; // position on the edge
-  Vec3 position;
+// Where the tracer can go next, and what it costs from the current point to the source that way.
+struct Step {
+  double value = kInfinity;            // the step's length plus the distance left after it
+  ResolvedPoint to{SurfacePoint::Kind::Vertex, kNoIndex, 0.0, {}, Vec3::Zero()};  // where it ends
+  std::size_t source = kNoSource;      // it ends at this source (`to` is then that source)
+  Index through = kNoIndex;            // the face it crosses
+  bool moves = true;                   // false: it stays at the point (zero-area faces)
 };
 
-PathPoint toPathPoint(const Mesh& mesh, const State& s, std::span<const ResolvedPoint> sources) {
-  switch (s.at) {
-    case At::Vertex: return {SurfacePoint::atVertex(s.element), s.position};
-    case At::Edge: {
-      const Edge& E = mesh.edge(s.element);
-      return {SurfacePoint::onEdge(E.vertex[0], E.vertex[1], s.x / E.length), s.position};
+ResolvedPoint vertexPoint(const Mesh& mesh, Index v) {
+  return {SurfacePoint::Kind::Vertex, v, 0.0, {}, mesh.position(v)};
+}
+
+// The point at x (length units from edge(e).vertex[0]) of edge e; within tol::kPathSamePointRel
+// of an end, that end's vertex.
+ResolvedPoint edgePoint(const Mesh& mesh, Index e, double x) {
+  const Edge& E = mesh.edge(e);
+  const double snap = tol::kPathSamePointRel * E.length;
+  if (x <= snap) return vertexPoint(mesh, E.vertex[0]);
+  if (x >= E.length - snap) return vertexPoint(mesh, E.vertex[1]);
+  const double t = x / E.length;
+  const Vec3 at = (1.0 - t) * mesh.position(E.vertex[0]) + t * mesh.position(E.vertex[1]);
+  return {SurfacePoint::Kind::Edge, e, x, {}, at};
+}
+
+PathPoint toPathPoint(const Mesh& mesh, const ResolvedPoint& p) {
+  switch (p.kind) {
+    case SurfacePoint::Kind::Vertex: return {SurfacePoint::atVertex(p.element), p.position};
+    case SurfacePoint::Kind::Edge: {
+      const Edge& E = mesh.edge(p.element);
+      return {SurfacePoint::onEdge(E.vertex[0], E.vertex[1], p.t / E.length), p.position};
     }
-    case At::Face: {
-      return {SurfacePoint::inFace(s.element, 1.0 / 3, 1.0 / 3, 1.0 / 3), s.position};
-    }
-    case At::Source: {
-      const ResolvedPoint& r = sources[s.element];
-      if (r.kind == SurfacePoint::Kind::Vertex) return {SurfacePoint::atVertex(r.element), r.position};
-      if (r.kind == SurfacePoint::Kind::Edge) {
-        const Edge& E = mesh.edge(r.element);
-        return {SurfacePoint::onEdge(E.vertex[0], E.vertex[1], r.t / E.length), r.position};
-      }
-      return {SurfacePoint::inFace(r.element, r.bary[0], r.bary[1], r.bary[2]), r.position};
-    }
+    case SurfacePoint::Kind::Face:
+      return {SurfacePoint::inFace(p.element, p.bary[0], p.bary[1], p.bary[2]), p.position};
   }
   return {};
 }
 
-Vec3 edgePoint(const Mesh& mesh, Index e, double x) {
-  const Edge& E = mesh.edge(e);
-  const double t = x / E.length;
-  return (1.0 - t) * mesh.position(E.vertex[0]) + t * mesh.position(E.vertex[1]);
+// Whether p lies on edge e (p is then no place to cross e from).
+bool isOnEdge(const Mesh& mesh, const ResolvedPoint& p, Index e) {
+  switch (p.kind) {
+    case SurfacePoint::Kind::Vertex:
+      return mesh.edge(e).vertex[0] == p.element || mesh.edge(e).vertex[1] == p.element;
+    case SurfacePoint::Kind::Edge: return p.element == e;
+    case SurfacePoint::Kind::Face: return false;
+  }
+  return false;
 }
+
+// Whether source point src lies on face g: inside it, on one of its edges, or at a corner.
+bool isOnFace(const Mesh& mesh, const ResolvedPoint& src, Index g) {
+  switch (src.kind) {
+    case SurfacePoint::Kind::Vertex: {
+      const auto& corners = mesh.face(g);
+      return std::find(corners.begin(), corners.end(), src.element) != corners.end();
+    }
+    case SurfacePoint::Kind::Edge: return mesh.localEdgeIndex(g, src.element) >= 0;
+    case SurfacePoint::Kind::Face: return src.element == g;
+  }
+  return false;
+}
+
+class Tracer {
+ public:
+  explicit Tracer(const GeodesicSolver& solver)
+      : mesh_(solver.mesh()),
+        edges_(solver.edgeIntervals()),
+        vertexDistance_(solver.vertexDistances()),
+        sources_(solver.sources()) {}
+
+  // The faces p lies on.
+  std::vector<Index> facesAt(const ResolvedPoint& p) const {
+    switch (p.kind) {
+      case SurfacePoint::Kind::Vertex: {
+        const auto fan = mesh_.vertexFaces(p.element);
+        return {fan.begin(), fan.end()};
+      }
+      case SurfacePoint::Kind::Edge: {
+        std::vector<Index> faces;
+        for (Index g : mesh_.edge(p.element).face)
+          if (g != kNoIndex) faces.push_back(g);
+        return faces;
+      }
+      case SurfacePoint::Kind::Face: return {p.element};
+    }
+    return {};
+  }
+
+  // The source at vertex v, or kNoSource.
+  std::size_t sourceAtVertex(Index v) const {
+    for (std::size_t i = 0; i < sources_.size(); ++i)
+      if (sources_[i].kind == SurfacePoint::Kind::Vertex && sources_[i].element == v) return i;
+    return kNoSource;
+  }
+
+  // Offers `best` every step from p (on face g) through g: to a corner, to a source on g, across
+  // g to another edge (see the top of the file).
+  void stepsThrough(const ResolvedPoint& p, Index g, Step& best) const {
+    const auto& edges = mesh_.faceEdges(g);
+    double scale = 0.0;  // the face's longest edge
+    for (Index e : edges) scale = std::max(scale, mesh_.edge(e).length);
+    const double still = tol::kPathSamePointRel * scale;
+    auto offer = [&](double value, const ResolvedPoint& to, std::size_t source, double length) {
+      if (value < best.value) best = {value, to, source, g, length > still};
+    };
+
+    // Sources and corners: straight lines in g, measured in g unfolded onto its first edge.
+    // Sources first: a source beyond a corner on the same line (a zero-area face) ties with the
+    // corner, and going straight there ends the path.
+    const Vec2 q = pointInFaceFrame(mesh_, p, g, edges[0]);
+    for (std::size_t i = 0; i < sources_.size(); ++i) {
+      if (!isOnFace(mesh_, sources_[i], g)) continue;
+      const double length = (pointInFaceFrame(mesh_, sources_[i], g, edges[0]) - q).norm();
+      offer(length, sources_[i], i, length);
+    }
+    for (Index u : mesh_.face(g)) {
+      if (p.kind == SurfacePoint::Kind::Vertex && p.element == u) continue;
+      if (!std::isfinite(vertexDistance_[u])) continue;
+      const ResolvedPoint corner = vertexPoint(mesh_, u);
+      const double length = (pointInFaceFrame(mesh_, corner, g, edges[0]) - q).norm();
+      offer(vertexDistance_[u] + length, corner, kNoSource, length);
+    }
+
+    // Across g onto each edge e that p is not on, then along one of e's windows from beyond e.
+    for (Index e : edges) {
+      if (isOnEdge(mesh_, p, e)) continue;
+      const Edge& E = mesh_.edge(e);
+      const Vec2 qe = pointInFaceFrame(mesh_, p, g, e);  // g above e: qe.y() >= 0
+      double value = kInfinity, at = 0.0, length = 0.0;
+      for (const Interval& w : edges_[e].intervals()) {
+        // A window whose source is on g's side came through g: the geodesic from p does not
+        // cross e to follow it (it would come straight back); one of g's other edges, a corner
+        // or a source on g carries it.
+        if (E.face[w.side] == g) continue;
+        const Vec2 s(w.source.x(), -w.source.y());  // unfolded beyond e: below it
+        // Where q → s crosses e's line (q and s on either side, or both on it: then at s), kept
+        // within the window: the path turns there only when the window ends (at a pseudo-source).
+        const double rise = qe.y() - s.y();
+        const double u = rise > 0.0 ? -s.y() / rise : 0.0;
+        const double cx = std::clamp(s.x() + u * (qe.x() - s.x()), w.b0, w.b1);
+        const Vec2 c(cx, 0.0);
+        const double toC = (qe - c).norm();
+        const double v = w.sigma + (c - s).norm() + toC;
+        if (v < value) {
+          value = v;
+          at = cx;
+          length = toC;
+        }
+      }
+      if (value < best.value) offer(value, edgePoint(mesh_, e, at), kNoSource, length);
+    }
+  }
+
+ private:
+  const Mesh& mesh_;
+  std::span<const EdgeIntervals> edges_;
+  std::span<const double> vertexDistance_;
+  std::span<const ResolvedPoint> sources_;
+};
 
 }  // namespace
 
 GeodesicPath GeodesicSolver::path(const SurfacePoint& target) const {
-  const ResolvedPoint t = resolve(mesh_, target);
+  const ResolvedPoint start = resolve(mesh_, target);
   GeodesicPath result;
-  if (!std::isfinite(resolvedDistance(t))) return result;
+  if (!std::isfinite(resolvedDistance(start))) return result;
 
-  State cur{t.kind == SurfacePoint::Kind::Vertex ? At::Vertex
-            : t.kind == SurfacePoint::Kind::Edge ? At::Edge
-                                                 : At::Face,
-            t.element, t.t, t.position};
-  if (cur.at == At::Face) {
-    // Keep the real barycentrics for the first point.
-    result.points.push_back({target, t.position});
-  } else {
-    result.points.push_back(toPathPoint(mesh_, cur, sources_));
-  }
-
-  // Is `s` a source point, and which one?
-  auto sourceAtVertex = [&](Index v) -> std::optional<std::size_t> {
-    for (std::size_t i = 0; i < sources_.size(); ++i)
-      if (sources_[i].kind == SurfacePoint::Kind::Vertex && sources_[i].element == v) return i;
-    return std::nullopt;
-  };
-
-  // Go from `from` (a point on edge `e` at x, or its vertex) into face g towards window w's
-  // source; returns the next state (the exit point on another edge of g, or the pseudo-source).
-  auto walk = [&](Index e, double x, Index g, const Interval& w) -> std::optional<State> {
-    const FaceFrame& fr = mesh_.frame(g, e);
-    const Edge& E = mesh_.edge(e);
-    const double scale = std::max(E.length, fr.apexPos.norm());
-    if (w.source.y() <= tol::kCoincideRel * scale) {
-      // The source is on the edge's own line (G1, G4, G5 windows): the path runs along the edge.
-      if (w.source.x() <= tol::kCoincideRel * scale && x > 0.0)
-        return State{At::Vertex, E.vertex[0], 0.0, mesh_.position(E.vertex[0])};
-      if (w.source.x() >= E.length - tol::kCoincideRel * scale && x < E.length)
-        return State{At::Vertex, E.vertex[1], 0.0, mesh_.position(E.vertex[1])};
-    }
-    const Vec2 p(x, 0.0), s(w.source.x(), w.source.y());  // source on g's side: above the axis
-    const Vec2 v0(0.0, 0.0), v1 = fr.apexPos, v2(E.length, 0.0);
-    const Vec2 d = s - p;
-    double bestU = 1.0;
-    int exitEdge = 0;
-    double exitT = 0.0;
-    const Vec2 segA[2] = {v0, v1}, segB[2] = {v1, v2};
-    for (int k = 0; k < 2; ++k) {
-      const Vec2 a = segA[k], b = segB[k];
-      const double denom = pred::cross(d, b - a);
-      if (denom == 0.0) continue;
-      const double u = pred::cross(a - p, b - a) / denom;
-      const double tt = pred::cross(a - p, d) / denom;
-      if (u > 1e-12 && u < bestU && tt >= -1e-9 && tt <= 1.0 + 1e-9) {
-        bestU = u;
-        exitEdge = k + 1;
-        exitT = std::clamp(tt, 0.0, 1.0);
-      }
-    }
-    if (exitEdge == 0 || bestU >= 1.0 - 1e-12) {
-      // The pseudo-source must then be in (or on) face g; if it is not, the direction towards it
-      // leaves g at once (a window that covers this point but does not see it through g).
-      const double tolIn = -1e-9 * scale;
-      const bool inside = pred::cross(v1 - v0, s - v0) <= -tolIn * scale &&
-                          pred::cross(v2 - v1, s - v1) <= -tolIn * scale && s.y() >= tolIn;
-      if (!inside) return std::nullopt;
-      if (w.origin < 0) {
-        const std::size_t n = static_cast<std::size_t>(-(w.origin + 1));
-        return State{At::Source, static_cast<Index>(n), 0.0, sources_[n].position};
-      }
-      return State{At::Vertex, static_cast<Index>(w.origin), 0.0, mesh_.position(w.origin)};
-    }
-    const Index ex = exitEdge == 1 ? fr.edgeToV0 : fr.edgeToV2;
-    const Index from = exitEdge == 1 ? E.vertex[0] : fr.apex;
-    const Edge& X = mesh_.edge(ex);
-    const double along = X.vertex[0] == from ? exitT : 1.0 - exitT;
-    const double snap = tol::kCoincideRel * 1e3;
-    if (along <= snap) return State{At::Vertex, X.vertex[0], 0.0, mesh_.position(X.vertex[0])};
-    if (along >= 1.0 - snap) return State{At::Vertex, X.vertex[1], 0.0, mesh_.position(X.vertex[1])};
-    return State{At::Edge, ex, along * X.length, edgePoint(mesh_, ex, along * X.length)};
-  };
-
-  Index cameFromFace = kNoIndex;
+  // The first point is the target as given (a face point keeps its barycentrics unnormalised).
+  result.points.push_back(start.kind == SurfacePoint::Kind::Face ? PathPoint{target, start.position}
+                                                                 : toPathPoint(mesh_, start));
+  const Tracer tracer(*this);
+  ResolvedPoint cur = start;
+  // Faces crossed since the path last moved: not entered again from the same point. A window
+  // through a zero-area face is followed by a step of length zero (see the top of the file);
+  // without this, two such faces on one line could hand the point back and forth for ever. After
+  // a step of positive length no face needs barring: going back into the face just crossed is
+  // never cheaper (the triangle inequality in that face), and barring it would also bar a face
+  // the step only ran along the edge of (a source further along a zero-area face's line).
+  std::vector<Index> crossedHere;
   const std::size_t maxSteps = 8 * (mesh_.numFaces() + mesh_.numVertices()) + 16;
   for (std::size_t step = 0; step < maxSteps; ++step) {
-    State next{At::Source, 0, 0.0, {}};
-    Index nextFace = kNoIndex;  // the face crossed to reach `next`: not to be re-entered from it
-    double best = kInfinity;
-    // Candidate: continue with window w of edge e from position x on it (x at an end for a vertex).
-    auto consider = [&](Index e, double x, const Interval& w, Index excludeVertex) {
-      const Index g = mesh_.edge(e).face[w.side];
-      if (g == kNoIndex || g == cameFromFace) return;
-      if (x < w.b0 - 1e-12 * mesh_.edge(e).length || x > w.b1 + 1e-12 * mesh_.edge(e).length) return;
-      if (w.origin >= 0 && static_cast<Index>(w.origin) == excludeVertex) return;
-      const double value = w.distanceAt(x);
-      if (value < best) {
-        if (const auto step = walk(e, x, g, w)) {
-          best = value;
-          next = *step;
-          nextFace = g;
-        }
-      }
-    };
-    switch (cur.at) {
-      case At::Source:
-        result.length = 0.0;
-        for (std::size_t k = 1; k < result.points.size(); ++k)
-          result.length += (result.points[k].position - result.points[k - 1].position).norm();
-        return result;
-      case At::Vertex: {
-        if (auto src = sourceAtVertex(cur.element)) {
-          next = {At::Source, static_cast<Index>(*src), 0.0, cur.position};
-          best = 0.0;
-          break;
-        }
-        for (Index e : mesh_.vertexEdges(cur.element)) {
-          const Edge& E = mesh_.edge(e);
-          const double x = E.vertex[0] == cur.element ? 0.0 : E.length;
-          for (const Interval& w : edges_[e].intervals()) consider(e, x, w, cur.element);
-          const Index u = E.vertex[0] == cur.element ? E.vertex[1] : E.vertex[0];
-          if (vertexDistance_[u] + E.length < best) {
-            best = vertexDistance_[u] + E.length;
-            next = {At::Vertex, u, 0.0, mesh_.position(u)};
-            nextFace = kNoIndex;
-          }
-        }
-        break;
-      }
-      case At::Edge: {
-        const Edge& E = mesh_.edge(cur.element);
-        for (const Interval& w : edges_[cur.element].intervals()) consider(cur.element, cur.x, w, kNoIndex);
-        for (int k = 0; k < 2; ++k) {
-          const double dv = vertexDistance_[E.vertex[k]] + (k == 0 ? cur.x : E.length - cur.x);
-          if (dv < best) {
-            best = dv;
-            next = {At::Vertex, E.vertex[k], 0.0, mesh_.position(E.vertex[k])};
-            nextFace = kNoIndex;
-          }
-        }
-        for (std::size_t i = 0; i < sources_.size(); ++i) {
-          const ResolvedPoint& src = sources_[i];
-          if (src.kind == SurfacePoint::Kind::Edge && src.element == cur.element &&
-              std::abs(src.t - cur.x) < best) {
-            best = std::abs(src.t - cur.x);
-            next = {At::Source, static_cast<Index>(i), 0.0, src.position};
-            nextFace = kNoIndex;
-          }
-        }
-        break;
-      }
-      case At::Face: {
-        const Index f = cur.element;
-        for (Index v : mesh_.face(f)) {
-          const double dv = vertexDistance_[v] + (mesh_.position(v) - cur.position).norm();
-          if (dv < best) {
-            best = dv;
-            next = {At::Vertex, v, 0.0, mesh_.position(v)};
-            nextFace = f;
-          }
-        }
-        for (std::size_t i = 0; i < sources_.size(); ++i) {
-          const ResolvedPoint& src = sources_[i];
-          const bool touches =
-              (src.kind == SurfacePoint::Kind::Face && src.element == f) ||
-              (src.kind == SurfacePoint::Kind::Edge && mesh_.localEdgeIndex(f, src.element) >= 0);
-          const double dv = (src.position - cur.position).norm();
-          if (touches && dv < best) {
-            best = dv;
-            next = {At::Source, static_cast<Index>(i), 0.0, src.position};
-          }
-        }
-        for (Index e : mesh_.faceEdges(f)) {
-          const Edge& E = mesh_.edge(e);
-          const Vec3 o = mesh_.position(E.vertex[0]);
-          const Vec3 dir = (mesh_.position(E.vertex[1]) - o) / E.length;
-          const Vec3 rel = cur.position - o;
-          const Vec2 q(rel.dot(dir), rel.cross(dir).norm());
-          for (const Interval& w : edges_[e].intervals()) {
-            const Vec2 s(w.source.x(), -w.source.y());
-            const double u = (q.y() - s.y()) > 0 ? -s.y() / (q.y() - s.y()) : 0.0;
-            const double cx = std::clamp(s.x() + u * (q.x() - s.x()), w.b0, w.b1);
-            const Vec2 c(cx, 0.0);
-            const double value = w.sigma + (c - s).norm() + (q - c).norm();
-            if (value < best) {
-              best = value;
-              next = {At::Edge, e, cx, edgePoint(mesh_, e, cx)};
-              nextFace = f;
-            }
-          }
-        }
-        break;
-      }
+    Step best;
+    if (cur.kind == SurfacePoint::Kind::Vertex) {
+      if (const std::size_t source = tracer.sourceAtVertex(cur.element); source != kNoSource)
+        best = {0.0, cur, source};
     }
-    GEODEX_REQUIRE(std::isfinite(best), "path tracing lost its way at step " << step);
-    if (next.at == At::Edge) {
-      const Edge& X = mesh_.edge(next.element);
-      if (next.x <= 0.0) next = {At::Vertex, X.vertex[0], 0.0, mesh_.position(X.vertex[0])};
-      else if (next.x >= X.length) next = {At::Vertex, X.vertex[1], 0.0, mesh_.position(X.vertex[1])};
+    if (best.source == kNoSource) {
+      for (Index g : tracer.facesAt(cur))
+        if (std::find(crossedHere.begin(), crossedHere.end(), g) == crossedHere.end())
+          tracer.stepsThrough(cur, g, best);
     }
-    cameFromFace = nextFace;
-    cur = next;
-    result.points.push_back(toPathPoint(mesh_, cur, sources_));
+    GEODEX_REQUIRE(std::isfinite(best.value), "path tracing lost its way at step " << step);
+    // A step to a source vertex (its corner, or a crossing at it) ends there.
+    if (best.source == kNoSource && best.to.kind == SurfacePoint::Kind::Vertex)
+      best.source = tracer.sourceAtVertex(best.to.element);
+    if (best.source != kNoSource) {
+      result.points.push_back(toPathPoint(mesh_, sources_[best.source]));
+      result.length = 0.0;
+      for (std::size_t k = 1; k < result.points.size(); ++k)
+        result.length += (result.points[k].position - result.points[k - 1].position).norm();
+      return result;
+    }
+    if (best.moves) crossedHere.clear();
+    else crossedHere.push_back(best.through);
+    cur = best.to;
+    result.points.push_back(toPathPoint(mesh_, cur));
   }
   GEODEX_REQUIRE(false, "path tracing did not reach a source within " << maxSteps << " steps");
   return result;

@@ -22,11 +22,13 @@
 //   Those three pass without the filter. Case 6 (a coverage hole at a flat vertex of a lattice
 //   mesh scaled by 1e6) and case 9 (a shadow at a flat vertex of a barely jittered planar grid,
 //   wider than step 4 sews) are related: rays grazing a flat vertex just outside kCollinearSin.
-// (B) Case 7: path tracing leaves the surface (a tolerance in absolute cross-product units).
+// (B) Case 7: path tracing leaves the surface (a tolerance in absolute cross-product units;
+//   fixed: the tracer now prices steps through the faces at the point, path.cpp).
 // (C) Case 8 (Algorithm2Regression.*): Eq. 1 loses its roots and step 2 drops a better interval
 //   (fixed in f1f91c6: step 2 also samples where f − g can turn).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <string>
@@ -228,6 +230,10 @@ TEST(SolverRegression, ScaledLatticeMeshLeavesAnEdgeUncoveredAtAFlatVertex) {
 // test (path.cpp, walk) allows 1e-9 × scale² with scale the face's longest edge: 10 in
 // cross-product units, against 1.58. The window's value at vertex 1 ties with the correct windows'
 // to 2e-16 and wins the tie, so the walk jumps to the source.
+// Fixed in path.cpp: the tracer no longer walks towards a window's source and asks whether it is
+// inside the face; from each point it prices the steps through each face the point is on (across
+// to another edge of that face and on along a window from beyond it, to a corner, to a source on
+// the face) and takes the cheapest, so every segment joins two points of one face.
 TEST(SolverRegression, PathFromAVertexBesideLongThinTrianglesStaysOnTheSurface) {
   const TriangleSoup soup = gen::farSourceBumpyPatch(3, 1e5, 0);
   const Mesh mesh(soup);
@@ -239,6 +245,26 @@ TEST(SolverRegression, PathFromAVertexBesideLongThinTrianglesStaysOnTheSurface) 
       << "over " << path.points.size() << " points";
   EXPECT_GT(path.points.size(), 2u)
       << "a straight chord from vertex 1 to the source is not on this surface";
+  // Each segment joins two points of one face: a vertex's fan, an edge's faces, or the face.
+  auto facesAt = [&](const SurfacePoint& p) -> std::vector<Index> {
+    if (p.kind == SurfacePoint::Kind::Vertex) {
+      const auto fan = mesh.vertexFaces(p.vertex);
+      return {fan.begin(), fan.end()};
+    }
+    if (p.kind == SurfacePoint::Kind::Face) return {p.face};
+    const Edge& E = mesh.edge(mesh.findEdge(p.vertex, p.toVertex));
+    std::vector<Index> faces{E.face[0]};
+    if (E.face[1] != kNoIndex) faces.push_back(E.face[1]);
+    return faces;
+  };
+  for (std::size_t k = 0; k + 1 < path.points.size(); ++k) {
+    const std::vector<Index> a = facesAt(path.points[k].where);
+    const std::vector<Index> b = facesAt(path.points[k + 1].where);
+    const auto inB = [&](Index f) { return std::find(b.begin(), b.end(), f) != b.end(); };
+    EXPECT_TRUE(std::any_of(a.begin(), a.end(), inB))
+        << "segment " << k << " (" << formatSurfacePoint(path.points[k].where) << " to "
+        << formatSurfacePoint(path.points[k + 1].where) << ") is on no face";
+  }
 }
 
 // Case 9: a shadow at a flat vertex wider than step 4 sews, on a planar convex mesh. A 2×2 grid

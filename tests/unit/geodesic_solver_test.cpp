@@ -7,9 +7,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <string>
+#include <vector>
 
 #include "geodex/verify/invariant_checker.h"
 #include "geodex/verify/mesh_generators.h"
@@ -288,6 +291,74 @@ TEST(SolverApi, PathOnACurvedSurfaceHasTheDistanceAsLength) {
     const GeodesicPath path = solver.path(SurfacePoint::atVertex(v));
     EXPECT_NEAR(path.length, solver.vertexDistances()[v], 1e-9 * (1 + solver.vertexDistances()[v])) << v;
   }
+}
+
+// The faces a path point lies on: a vertex's fan, an edge's one or two faces, a face.
+std::vector<Index> facesAt(const Mesh& mesh, const SurfacePoint& p) {
+  switch (p.kind) {
+    case SurfacePoint::Kind::Vertex: {
+      const auto fan = mesh.vertexFaces(p.vertex);
+      return {fan.begin(), fan.end()};
+    }
+    case SurfacePoint::Kind::Edge: {
+      std::vector<Index> faces;
+      for (Index f : mesh.edge(mesh.findEdge(p.vertex, p.toVertex)).face)
+        if (f != kNoIndex) faces.push_back(f);
+      return faces;
+    }
+    case SurfacePoint::Kind::Face: return {p.face};
+  }
+  return {};
+}
+
+// "" if every segment of the path joins two points of one face (it lies on the surface), else
+// which segment does not.
+std::string segmentOffTheSurface(const Mesh& mesh, const GeodesicPath& path) {
+  for (std::size_t k = 0; k + 1 < path.points.size(); ++k) {
+    const std::vector<Index> a = facesAt(mesh, path.points[k].where);
+    const std::vector<Index> b = facesAt(mesh, path.points[k + 1].where);
+    const auto inB = [&](Index f) { return std::find(b.begin(), b.end(), f) != b.end(); };
+    if (std::none_of(a.begin(), a.end(), inB))
+      return "segment " + std::to_string(k) + ": " + formatSurfacePoint(path.points[k].where) +
+             " to " + formatSurfacePoint(path.points[k + 1].where) + " share no face";
+  }
+  return "";
+}
+
+TEST(SolverApi, PathPassesThroughAZeroAreaFaceAlongItsLine) {
+  // Regression (corpus/fuzz_solver/regress/path-length-through-zero-area-face). Vertex 1 lies on
+  // the edge 0–2, so face 0-2-1 has zero area; the faces 0-1-3 and 1-2-3 sit on it, the face
+  // 0-4-2 hangs from the long edge 0–2:
+  //
+  //              3 (2, 2, 0)  source
+  //            /   \
+  //     0 ---- 1 ---- 2        0 (0, 0, 0), 1 (2, 0, 0), 2 (4, 0, 0); face 0-2-1 between the
+  //             \   /            two rows is the line itself
+  //              4 (2, −2, 1)  target
+  //
+  // The geodesic from 4 comes up to (2, 0, 0) on edge 0–2, which is vertex 1, and goes on up to
+  // 3: √5 + 2. The tracer reached (2, 0, 0) on edge 0–2, did not see the window there pass
+  // through the zero-area face and turned to vertex 0 instead: 7.06 long.
+  TriangleSoup soup;
+  soup.positions = {{0, 0, 0}, {2, 0, 0}, {4, 0, 0}, {2, 2, 0}, {2, -2, 1}};
+  soup.faces = {{0, 1, 3}, {1, 2, 3}, {0, 2, 1}, {0, 4, 2}};
+  const Mesh mesh(soup);
+  GeodesicSolver solver(mesh);
+  solver.solve(std::vector<SurfacePoint>{SurfacePoint::atVertex(3)});
+  const double expected = std::sqrt(5.0) + 2.0;
+  ASSERT_NEAR(solver.vertexDistances()[4], expected, 1e-12);
+
+  const GeodesicPath path = solver.path(SurfacePoint::atVertex(4));
+  EXPECT_NEAR(path.length, expected, 1e-12) << "over " << path.points.size() << " points";
+  ASSERT_GE(path.points.size(), 3u);
+  EXPECT_EQ(path.points.front().where.kind, SurfacePoint::Kind::Vertex);
+  EXPECT_EQ(path.points.front().where.vertex, 4u);
+  EXPECT_EQ(path.points.back().where.kind, SurfacePoint::Kind::Vertex);
+  EXPECT_EQ(path.points.back().where.vertex, 3u);
+  EXPECT_EQ(segmentOffTheSurface(mesh, path), "");
+  for (const PathPoint& p : path.points)
+    EXPECT_LT(std::abs(p.position.x() - 2.0), 1e-12) << "the path stays in the plane x = 2: "
+                                                     << formatSurfacePoint(p.where);
 }
 
 TEST(SolverApi, APointAHairFromAVertexOrEdgeIsSnappedOntoIt) {

@@ -134,5 +134,21 @@ inline double vertexAgreementTolerance(double distance, double edgeLength, doubl
 inline constexpr double kPointwiseMinRel =
     kContinuityRel + 2.0 * kTinyIntervalRel + 2.0 * kFlatVertexAngle + kTieRel;
 
+// ===  Path tracing (path.cpp) ===================================================================
+
+/// Two points of a traced path closer than this × the local length (the edge's, or the crossed
+/// face's longest edge) are one point. As kCoincideRel, for the same reason: a crossing is
+/// computed from an unfolded source that carries ~1e-14 relative rounding, so a geodesic through
+/// a vertex (the ray on a window's boundary, a pseudo-source where the path bends) crosses the
+/// edge a rounding error beside it. Two uses:
+///  - a crossing this close to an end of its edge is that end's vertex, so the path turns at the
+///    vertex, not at an edge point a hair from it (the next step starts from the right place);
+///  - a step this short does not move the point (through a zero-area face, whose edges lie on one
+///    line up to kFlatFaceRel: the crossing is the point itself), so the faces crossed since the
+///    path last moved are not entered again from there (two such faces on one line would hand the
+///    point back and forth).
+/// Moving a path point by this much changes its length by at most twice as much: far below the
+/// 1e-9 × diagonal accuracy the path's length is held to.
+inline constexpr double kPathSamePointRel = kCoincideRel;
 
 }  // namespace geodex::tol
