@@ -67,7 +67,7 @@ Mesh::Mesh(TriangleSoup soup) : soup_(std::move(soup)) {
                              " and " + std::to_string(t[(k + 1) % 3]) +
                              " are at the same position (weld duplicate vertices first)");
       }
-      const double length = (P[t[(k + 1) % 3]] - P[t[k]]).norm();
+      const double length = lengthForRangeCheck(P[t[(k + 1) % 3]] - P[t[k]]);
       if (!(length >= tol::kMinEdgeLength && length <= tol::kMaxEdgeLength)) {
         std::ostringstream os;
         os << where(soup_, soup_.faceLines, f) << "face " << f << ": edge " << t[k] << "-"
@@ -284,6 +284,12 @@ void Mesh::sortEdgesAlongSpace() {
   edges_ = std::move(sorted);
   for (auto& fe : faceEdges_)
     for (Index& e : fe) e = newIndex[e];
+}
+
+double lengthForRangeCheck(const Vec3& d) {
+  const double largest = d.cwiseAbs().maxCoeff();
+  if (!(largest >= tol::kMinEdgeLength / 2.0 && largest <= tol::kMaxEdgeLength)) return largest;
+  return d.norm();  // squares of at most 1e300 and, for the largest, at least 2.5e-301
 }
 
 Index Mesh::findEdge(Index a, Index b) const {

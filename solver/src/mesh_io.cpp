@@ -1235,7 +1235,7 @@ void validateMesh(const TriangleSoup& soup, std::vector<MeshIssue>& issues) {
     for (int k = 0; k < 3 && lengthsInRange; ++k) {
       const Index a = t[k];
       const Index b = t[(k + 1) % 3];
-      const double length = (positions[b] - positions[a]).norm();
+      const double length = lengthForRangeCheck(positions[b] - positions[a]);
       if (length >= tol::kMinEdgeLength && length <= tol::kMaxEdgeLength) continue;
       lengthsInRange = false;
       edgeLengthRange.add([&, a, b, length](bool full) {

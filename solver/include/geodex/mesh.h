@@ -31,6 +31,12 @@ bool isFinite(const Vector& p) {
   return true;
 }
 
+/// |d| where it lies in [tol::kMinEdgeLength, tol::kMaxEdgeLength]; outside that range, a value
+/// also outside it (the largest coordinate's magnitude) — computed without overflow or underflow
+/// for any finite d, which the range check of an edge needs (squaring 1e200 or dividing by 1e-320
+/// raises floating-point exceptions, trapped in debug test runs).
+double lengthForRangeCheck(const Vec3& d);
+
 /// Triangles and positions before connectivity is built (what the readers produce).
 struct TriangleSoup {
   std::vector<Vec3> positions;            ///< #V positions
