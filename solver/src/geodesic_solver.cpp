@@ -128,33 +128,60 @@ void GeodesicSolver::seedSource(const ResolvedPoint& p, std::size_t number) {
       own.source = Vec2(p.t, 0.0);
       own.origin = origin;
       own.markPropagated();
+      // The ends first: the windows below set their distances too (to rounding).
+      seedCorner(E.vertex[0], p.t);
+      seedCorner(E.vertex[1], E.length - p.t);
       addInterval(p.element, own, nullptr);
-      for (Index f : E.face) {
-        if (f == kNoIndex) continue;
-        for (Index e : mesh_.faceEdges(f)) {
-          if (e == p.element) continue;
-          Interval w = windowFromPoint(mesh_, f, e, p, 0.0, origin);
-          if (mesh_.edge(e).face[1 - w.side] == kNoIndex) w.markPropagated();
-          addInterval(e, w, nullptr);
-        }
-      }
+      for (Index f : E.face)
+        if (f != kNoIndex) seedFaceFromPoint(f, p, p.element, 0.0, origin);
       return;
     }
-    case SurfacePoint::Kind::Face:
-      for (Index e : mesh_.faceEdges(p.element)) {
-        Interval w = windowFromPoint(mesh_, p.element, e, p, 0.0, origin);
-        if (mesh_.edge(e).face[1 - w.side] == kNoIndex) w.markPropagated();
-        addInterval(e, w, nullptr);
+    case SurfacePoint::Kind::Face: {
+      const Index f = p.element;
+      const Index e = mesh_.faceEdges(f)[0];
+      const Vec2 q = pointInFaceFrame(mesh_, p, f, e);
+      for (Index v : mesh_.face(f)) {  // the corners first: the windows below set them too
+        const ResolvedPoint corner{SurfacePoint::Kind::Vertex, v, 0.0, {}, mesh_.position(v)};
+        seedCorner(v, (pointInFaceFrame(mesh_, corner, f, e) - q).norm());
       }
+      seedFaceFromPoint(f, p, kNoIndex, 0.0, origin);
       return;
+    }
   }
+}
+
+// Windows on the edges of face f (but `skip`) from the point p of f (inside it or on its boundary),
+// at distance sigma from the source `origin` stands for.
+void GeodesicSolver::seedFaceFromPoint(Index f, const ResolvedPoint& p, Index skip, double sigma,
+                                       std::int32_t origin) {
+  for (Index e : mesh_.faceEdges(f)) {
+    if (e == skip) continue;
+    Interval w = windowFromPoint(mesh_, f, e, p, sigma, origin);
+    if (mesh_.edge(e).face[1 - w.side] == kNoIndex) w.markPropagated();
+    addInterval(e, w, nullptr);
+  }
+}
+
+// A corner of a source's face (or an end of its edge) at distance d, straight inside the face:
+// that is its distance (no path is shorter than the segment), and it becomes a pseudo-source now.
+// Its windows are real paths (source → corner → point), so they never undercut a distance; what
+// they add is the fan of directions at the corner, where a source a hair from the corner has its
+// rays' directions only to rounding / distance — 1e-7 rad for a source 4e-10 of an edge from it,
+// so decisions at kCollinearSin and crossings at grazing angles went wrong and left edges at that
+// corner uncovered (corpus/fuzz_solver/regress: seven findings of a source just outside the
+// snapping band, tol::kSnapParam).
+void GeodesicSolver::seedCorner(Index v, double d) {
+  if (d > vertexDistance_[v]) return;  // another source is nearer
+  vertexDistance_[v] = d;
+  createPseudoSourceWindows(v, d, static_cast<std::int32_t>(v));
 }
 
 // A saddle, boundary or source vertex v at distance sigma becomes a pseudo-source: every edge
 // opposite v in a face around v gets a whole-edge window from v (Fig. 3c's additional intervals,
 // for all faces at once), and every edge incident to v one from v on its own line (G1; already
 // propagated, since its rays into either face are the opposite-edge windows).
-void GeodesicSolver::createPseudoSourceWindows(Index v, double sigma, std::int32_t origin) {
+void GeodesicSolver::createPseudoSourceWindows(Index v, double sigma, std::int32_t origin,
+                                               int depth, Index from) {
   ++stats_.pseudoSourceEvents;
   for (Index f : mesh_.vertexFaces(v)) {
     const auto& corners = mesh_.face(f);
@@ -169,6 +196,7 @@ void GeodesicSolver::createPseudoSourceWindows(Index v, double sigma, std::int32
     w.origin = origin;
     if (mesh_.edge(fr.edge).face[1 - w.side] == kNoIndex) w.markPropagated();
     addInterval(fr.edge, w, nullptr);
+    seedAcrossVertexOnEdge(v, f, fr, sigma, origin, depth, from);
   }
   for (Index e : mesh_.vertexEdges(v)) {
     const Edge& E = mesh_.edge(e);
@@ -181,6 +209,42 @@ void GeodesicSolver::createPseudoSourceWindows(Index v, double sigma, std::int32
     w.markPropagated();
     addInterval(e, w, nullptr);
   }
+}
+
+// v lies on the edge opposite it in face f (a zero-area face, or one so thin that v's window on
+// that edge is a D1 sliver): v is a point of that edge, and its fan into the face g across the
+// edge (Fig. 3c's additional intervals, for a face v touches geometrically but not in the mesh's
+// connectivity) is seeded now, as for an edge-point source. Left to v's window on the edge, it
+// was lost: the direct windows through f tie with it at v and are shorter everywhere else, so
+// Algorithm 2 cut it to nothing before it was propagated, and the shadow of v in g was reached
+// the long way round (31 fuzz_solver findings, corpus/fuzz_solver/regress/*zero-area-saddle*).
+// When g is zero-area too with its apex u at the same point, u is that point again: it becomes
+// a pseudo-source at the same distance (its own angle sum may well read 2π).
+void GeodesicSolver::seedAcrossVertexOnEdge(Index v, Index f, const FaceFrame& fr, double sigma,
+                                            std::int32_t origin, int depth, Index from) {
+  const Edge& E = mesh_.edge(fr.edge);
+  const double scale = std::max(E.length, fr.apexPos.norm());
+  if (!(fr.apexPos.y() <= tol::kVertexOnEdgeRel * scale)) return;
+  if (!(fr.apexPos.x() > 0.0 && fr.apexPos.x() < E.length)) return;
+  const Index g = E.face[0] == f ? E.face[1] : E.face[0];
+  if (g == kNoIndex || g == f) return;
+  const double at = sigma + fr.apexPos.y();  // the point of the edge below v
+  const FaceFrame& gf = mesh_.frame(g, fr.edge);
+  const double gScale = std::max(E.length, gf.apexPos.norm());
+  if (gf.apexPos.y() <= tol::kVertexOnEdgeRel * gScale &&
+      std::abs(gf.apexPos.x() - fr.apexPos.x()) <= tol::kCoincideRel * gScale) {
+    // u is v again: its fan too, even where the direct windows have set its distance already
+    // (to rounding); not back to where this came from.
+    const Index u = gf.apex;
+    if (depth < kMaxVertexOnEdgeDepth && u != v && u != from &&
+        at <= vertexDistance_[u] + tol::kTieRel * at) {
+      vertexDistance_[u] = std::min(vertexDistance_[u], at);
+      createPseudoSourceWindows(u, at, origin, depth + 1, v);
+    }
+    return;
+  }
+  const ResolvedPoint p{SurfacePoint::Kind::Edge, fr.edge, fr.apexPos.x(), {}, mesh_.position(v)};
+  seedFaceFromPoint(g, p, fr.edge, at, origin);
 }
 
 // ===  One propagation case =======================================================================

@@ -390,6 +390,60 @@ TEST(SolverApi, APointAHairFromAVertexOrEdgeIsSnappedOntoIt) {
   (void)d;
 }
 
+// ===  Fuzz findings, shrunk (corpus/fuzz_solver/regress/) ======================================
+
+TEST(SolverRegression, ASaddleOnTheEdgeOfAZeroAreaFaceSpreadsIntoTheFaceAcross) {
+  // Face (0, 2, 1) is zero-area: vertex 1 = (1, 0, 0) lies on its edge 0–2. Vertex 1 is a saddle
+  // (its faces bend up and down), so the shortest path from vertex 4 to vertex 5 bends there:
+  // |4 − 1| + |1 − 5| = |(−0.5, −1, 1)| + |(−1, −1, 0)| = 1.5 + √2. Vertex 1's pseudo-source window
+  // on edge 0–2 tied with the direct windows at its one point and lost everywhere else before it
+  // was propagated, so face (0, 5, 2) across that edge never got vertex 1's fan: D(5) was 3.4844
+  // (31 fuzz findings: regress/fan-lost-vertex-on-edge-of-zero-area-face-*).
+  TriangleSoup soup;
+  soup.positions = {Vec3(0, 0, 0),    Vec3(1, 0, 0),  Vec3(2, 0, 0), Vec3(0.5, 1, 1),
+                    Vec3(1.5, 1, -1), Vec3(0, -1, 0), Vec3(3, -1, 0)};
+  soup.faces = {{0, 1, 3}, {1, 4, 3}, {1, 2, 4}, {0, 2, 1}, {0, 5, 2}, {2, 5, 6}};
+  const Mesh mesh(soup);
+  ASSERT_TRUE(mesh.isPseudoSourceVertex(1));
+  const std::vector<double> d = solveChecked(mesh, {SurfacePoint::atVertex(4)});
+  EXPECT_NEAR(d[5], 1.5 + std::sqrt(2.0), 1e-12);
+}
+
+TEST(SolverRegression, AnEdgeSourceAHairFromAVertexKeepsEveryEdgeThereCovered) {
+  // A 2×2 grid of unit cells (planar, convex: distances are Euclidean) and a source on the
+  // diagonal 4–8 at 6.4e-10 of its length from vertex 4, just outside the snapping band. Seen
+  // from a window with b1 = vertex 4, the direction to the source is known to rounding / 6.4e-10
+  // ≈ 1e-7 rad, and a decision that is exactly G5 came out right-of-wedge: edge 4–5's windows
+  // missed vertex 4, where it gave 2.00000000064 against D(4) = 9.05e-10 (7 fuzz findings:
+  // regress/ray-directions-source-near-vertex-*). The face's corners are pseudo-sources now.
+  const TriangleSoup soup = verify::gridMesh(2, 2, 2.0, 2.0);
+  const Mesh mesh(soup);
+  const SurfacePoint source = SurfacePoint::onEdge(4, 8, 6.4e-10);
+  const std::vector<double> d = solveChecked(mesh, {source});
+  const Vec3 s = verify::surfacePointPosition(soup, source);
+  for (Index v = 0; v < mesh.numVertices(); ++v)
+    EXPECT_NEAR(d[v], (mesh.position(v) - s).norm(), 1e-12) << "vertex " << v;
+}
+
+TEST(SolverRegression, AFaceSourceAHairFromAVertexLeavesNoShadow) {
+  // A planar domain and a face source 1.6e-10 (in barycentrics) from vertex 3: a crossing
+  // computed from the ill-conditioned direction to the source was off by 1.2e-5 of a 71-long
+  // edge, and the gap it left let a vertex on the continued ray be reached the long way round.
+  TriangleSoup soup;
+  soup.positions = {Vec3(96, 0, 0),   Vec3(160, 0, 0), Vec3(32, 64, 0),  Vec3(64, 64, 0),
+                    Vec3(128, 64, 0), Vec3(0, 128, 0), Vec3(64, 128, 0), Vec3(128, 128, 0),
+                    Vec3(0, 192, 0)};
+  soup.faces = {{0, 3, 2}, {0, 1, 3}, {1, 4, 3}, {2, 3, 6}, {2, 6, 5}, {3, 4, 7}, {3, 7, 6}, {5, 6, 8}};
+  const Mesh mesh(soup);
+  const SurfacePoint source = SurfacePoint::inFace(1, 1.6e-10, 0.0, 1.0 - 1.6e-10);
+  const std::vector<double> d = solveChecked(mesh, {source});
+  const Vec3 s3 = verify::surfacePointPosition(soup, source);
+  const auto exact = verify::planarDomainDistances(verify::planarBoundaryPolygons(soup),
+                                                   Vec2(s3.x(), s3.y()), verify::planarPositions(soup));
+  for (Index v = 0; v < mesh.numVertices(); ++v)
+    EXPECT_NEAR(d[v], exact[v], 1e-9 * mesh.boundingBoxDiagonal()) << "vertex " << v;
+}
+
 TEST(SolverApi, BadSourcesAreRefusedByName) {
   const Mesh mesh(verify::gridMesh(2, 2, 1.0, 1.0));
   GeodesicSolver solver(mesh);

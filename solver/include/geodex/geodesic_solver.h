@@ -109,7 +109,15 @@ class GeodesicSolver {
   Interval* queuedInterval(const QueueEntry& entry);
   void prefetchAhead() const;
   void updateVertex(Index v, double d);
-  void createPseudoSourceWindows(Index v, double sigma, std::int32_t origin);
+  void createPseudoSourceWindows(Index v, double sigma, std::int32_t origin, int depth = 0,
+                                 Index from = kNoIndex);
+  void seedFaceFromPoint(Index f, const ResolvedPoint& p, Index skip, double sigma,
+                         std::int32_t origin);
+  void seedCorner(Index v, double d);
+  void seedAcrossVertexOnEdge(Index v, Index f, const FaceFrame& fr, double sigma,
+                              std::int32_t origin, int depth, Index from);
+  /// Zero-area faces stacked on one point hand it on at most this many times.
+  static constexpr int kMaxVertexOnEdgeDepth = 4;
   void propagate(Index edge, const Interval& w);
   void finish(const SolveOptions& options, double radius);
   double targetsMaxDistance(std::span<const ResolvedPoint> targets) const;

@@ -36,6 +36,14 @@ inline constexpr double kFlatFaceRel = 1e-12;
 /// D2: overlaps up to this × edge length are resolved at their midpoint; larger ones are bugs.
 inline constexpr double kTinyIntervalRel = 1e-11;
 
+/// A vertex whose height over the opposite edge of one of its faces is below this × that face's
+/// longest edge lies on the edge, for its pseudo-source windows: its window on the edge is then
+/// at most a D1 sliver (kTinyIntervalRel) beside the direct windows through the face, so its fan
+/// into the face across the edge is seeded directly (GeodesicSolver::seedAcrossVertexOnEdge).
+/// Four times kTinyIntervalRel: the sliver's width is about the height, up to the unfolding's
+/// rounding; measured, a vertex lifted 5e-12 off the edge lost its fan as one exactly on it did.
+inline constexpr double kVertexOnEdgeRel = 4.0 * kTinyIntervalRel;
+
 /// Step 5: two neighbouring intervals have the same pseudo-source when the unfolded sources are
 /// closer than this × edge length and their σ differ by less than this × edge length.
 inline constexpr double kSameSourceRel = 1e-11;
