@@ -271,235 +271,240 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
   std::size_t s1 = std::min(n, j1 + 1);
   std::size_t m = 0;
   for (;;) {
-  in = incoming;
-  in.flags = static_cast<std::uint8_t>((incoming.flags & Interval::kPending) | Interval::kChanged |
-                                       kFromIncoming);
+    in = incoming;
+    in.flags = static_cast<std::uint8_t>((incoming.flags & Interval::kPending) |
+                                         Interval::kChanged | kFromIncoming);
 
-  // --- Steps 1 and 2 in one pass over the slice. Step 1 splits each old interval at the new
-  //     one's ends, so that each piece is wholly inside or outside it (an overlap shorter than ε
-  //     is not split off: it is D2, two intervals intersecting by a rounding error, resolved by
-  //     overlapMeetingPoint). Step 2 keeps, on each piece inside, the shorter of
-  //     the two; the new interval fills what no old interval covered.
-  out.clear();
-  double cursor = in.b0;     // the incoming range up to here is accounted for
-  bool incomingDone = false;  // the incoming interval's pieces are all in `out`
-  auto finishIncoming = [&] {
-    if (!incomingDone && cursor < in.b1) out.push_back(newPiece(cursor, in.b1));
-    incomingDone = true;
-  };
-  for (std::size_t k = s0; k < s1; ++k) {
-    const Interval& before = list_[k];
-    if (before.b1 <= in.b0) {  // before the incoming range
-      out.push_back(before);
-      continue;
-    }
-    if (incomingDone || before.b0 >= in.b1) {  // after it
-      finishIncoming();
-      out.push_back(before);
-      continue;
-    }
-    Interval w = before;
-    // Every piece cut from w is checked against where w's smallest distance was: the piece that
-    // still has it keeps w's queue entry, the others (when pending) need their own.
-    const double minX = w.argMinDistance();
-    const Interval::MinAt minAt = w.minAt();
-    auto oldPiece = [&](Interval& piece) { keepOrRequeue(piece, minX, minAt); };
-    const double overlapTiny = std::max(tinyLength(w, edgeLength), tinyLength(in, edgeLength));
-    if (w.b0 < in.b0 && w.b1 - in.b0 < overlapTiny && w.b1 < in.b1) {  // D2 at the new one's start
-      ++report.degeneracies[DegeneracyKind::D2];
-      const double meet = overlapMeetingPoint(w, in, in.b0, w.b1, edgeLength);
-      w.b1 = meet;
-      in.b0 = cursor = meet;
-      oldPiece(w);
-      out.push_back(w);
-      continue;
-    }
-    if (w.b1 > in.b1 && in.b1 - w.b0 < overlapTiny && w.b0 > in.b0) {  // D2 at the new one's end
-      ++report.degeneracies[DegeneracyKind::D2];
-      const double meet = overlapMeetingPoint(in, w, w.b0, in.b1, edgeLength);
-      w.b0 = meet;
-      in.b1 = meet;
-      oldPiece(w);
-      finishIncoming();
-      out.push_back(w);
-      continue;
-    }
-    if (w.b0 < in.b0) {  // 1.3: separate at interb0
-      Interval left = w;
-      left.b1 = in.b0;
-      oldPiece(left);
-      out.push_back(left);
-      w.b0 = in.b0;
-    }
-    Interval right = w;
-    const bool hasRight = w.b1 > in.b1;
-    if (hasRight) {  // 1.4: separate at interb1
-      w.b1 = in.b1;
-      right.b0 = in.b1;
-      oldPiece(right);
-    }
-    if (w.b0 > cursor) out.push_back(newPiece(cursor, w.b0));  // a gap: the new one's
-    cursor = w.b1;
-    if (sameSource(in, w, edgeLength)) {  // the same geodesic arriving again: keep the old
-      oldPiece(w);
-      out.push_back(w);
-    } else {
-      oldPiece(w);  // as cut by step 1; keepShorter may cut it further
-      keepShorter(in, w, edgeLength, report, out, newPiece, oldPiece);
-    }
-    if (hasRight) {
+    // --- Steps 1 and 2 in one pass over the slice. Step 1 splits each old interval at the new
+    //     one's ends, so that each piece is wholly inside or outside it (an overlap shorter than ε
+    //     is not split off: it is D2, two intervals intersecting by a rounding error, resolved by
+    //     overlapMeetingPoint). Step 2 keeps, on each piece inside, the shorter of
+    //     the two; the new interval fills what no old interval covered.
+    out.clear();
+    double cursor = in.b0;      // the incoming range up to here is accounted for
+    bool incomingDone = false;  // the incoming interval's pieces are all in `out`
+    auto finishIncoming = [&] {
+      if (!incomingDone && cursor < in.b1) out.push_back(newPiece(cursor, in.b1));
       incomingDone = true;
-      out.push_back(right);
+    };
+    for (std::size_t k = s0; k < s1; ++k) {
+      const Interval& before = list_[k];
+      if (before.b1 <= in.b0) {  // before the incoming range
+        out.push_back(before);
+        continue;
+      }
+      if (incomingDone || before.b0 >= in.b1) {  // after it
+        finishIncoming();
+        out.push_back(before);
+        continue;
+      }
+      Interval w = before;
+      // Every piece cut from w is checked against where w's smallest distance was: the piece that
+      // still has it keeps w's queue entry, the others (when pending) need their own.
+      const double minX = w.argMinDistance();
+      const Interval::MinAt minAt = w.minAt();
+      auto oldPiece = [&](Interval& piece) { keepOrRequeue(piece, minX, minAt); };
+      const double overlapTiny = std::max(tinyLength(w, edgeLength), tinyLength(in, edgeLength));
+      if (w.b0 < in.b0 && w.b1 - in.b0 < overlapTiny &&
+          w.b1 < in.b1) {  // D2 at the new one's start
+        ++report.degeneracies[DegeneracyKind::D2];
+        const double meet = overlapMeetingPoint(w, in, in.b0, w.b1, edgeLength);
+        w.b1 = meet;
+        in.b0 = cursor = meet;
+        oldPiece(w);
+        out.push_back(w);
+        continue;
+      }
+      if (w.b1 > in.b1 && in.b1 - w.b0 < overlapTiny && w.b0 > in.b0) {  // D2 at the new one's end
+        ++report.degeneracies[DegeneracyKind::D2];
+        const double meet = overlapMeetingPoint(in, w, w.b0, in.b1, edgeLength);
+        w.b0 = meet;
+        in.b1 = meet;
+        oldPiece(w);
+        finishIncoming();
+        out.push_back(w);
+        continue;
+      }
+      if (w.b0 < in.b0) {  // 1.3: separate at interb0
+        Interval left = w;
+        left.b1 = in.b0;
+        oldPiece(left);
+        out.push_back(left);
+        w.b0 = in.b0;
+      }
+      Interval right = w;
+      const bool hasRight = w.b1 > in.b1;
+      if (hasRight) {  // 1.4: separate at interb1
+        w.b1 = in.b1;
+        right.b0 = in.b1;
+        oldPiece(right);
+      }
+      if (w.b0 > cursor) out.push_back(newPiece(cursor, w.b0));  // a gap: the new one's
+      cursor = w.b1;
+      if (sameSource(in, w, edgeLength)) {  // the same geodesic arriving again: keep the old
+        oldPiece(w);
+        out.push_back(w);
+      } else {
+        oldPiece(w);  // as cut by step 1; keepShorter may cut it further
+        keepShorter(in, w, edgeLength, report, out, newPiece, oldPiece);
+      }
+      if (hasRight) {
+        incomingDone = true;
+        out.push_back(right);
+      }
     }
-  }
-  finishIncoming();
+    finishIncoming();
 
-  // Steps 3–5 work on the buffer through a raw pointer and a count: writes to the intervals'
-  // one-byte fields may alias anything, which would make every L.size() and L[i] reload the
-  // vector's own pointers.
-  Interval* const L = out.data();
-  m = out.size();
-  const bool atFront = s0 == 0, atBack = s1 == n;
+    // Steps 3–5 work on the buffer through a raw pointer and a count: writes to the intervals'
+    // one-byte fields may alias anything, which would make every L.size() and L[i] reload the
+    // vector's own pointers.
+    Interval* const L = out.data();
+    m = out.size();
+    const bool atFront = s0 == 0, atBack = s1 == n;
 
-  // --- Step 3: remove tiny intervals (D1), merging each into a neighbour that touches it. A
-  //     neighbour grown this way may itself still be tiny next to a coarser one: repeat until
-  //     nothing is (each pass removes at least one interval, so this ends). An interval's ε
-  //     depends on its pseudo-source only, which merging does not change.
-  for (bool removed = true; removed;) {
-    removed = false;
-    std::size_t w = 0;
-    double tinyKept = 0.0;                            // ε of L[w − 1]
-    double tinyHere = m > 0 ? tinyLength(L[0], edgeLength) : 0.0;  // ε of L[r]
-    for (std::size_t r = 0; r < m; ++r) {
-      const double tinyNext = r + 1 < m ? tinyLength(L[r + 1], edgeLength) : 0.0;
-      // ε against the neighbours L[r] will have: the last one kept (L[w − 1]) and the next.
-      double tiny = tinyHere;
-      if (w > 0 && L[w - 1].b1 >= L[r].b0 - tinyKept) tiny = std::max(tiny, tinyKept);
-      if (r + 1 < m && L[r + 1].b0 <= L[r].b1 + tinyNext) tiny = std::max(tiny, tinyNext);
-      if (L[r].length() >= tiny) {
+    // Steps 3 and 4 repeat while step 4 changes anything: an interval that grows over a sewn gap
+    // can come to touch a coarser neighbour and be a D1 sliver next to it (fuzz_edge_update).
+    for (bool sewn = true; sewn;) {
+      sewn = false;
+      // --- Step 3: remove tiny intervals (D1), merging each into a neighbour that touches it. A
+      //     neighbour grown this way may itself still be tiny next to a coarser one: repeat until
+      //     nothing is (each pass removes at least one interval, so this ends). An interval's ε
+      //     depends on its pseudo-source only, which merging does not change.
+      for (bool removed = true; removed;) {
+        removed = false;
+        std::size_t w = 0;
+        double tinyKept = 0.0;                                         // ε of L[w − 1]
+        double tinyHere = m > 0 ? tinyLength(L[0], edgeLength) : 0.0;  // ε of L[r]
+        for (std::size_t r = 0; r < m; ++r) {
+          const double tinyNext = r + 1 < m ? tinyLength(L[r + 1], edgeLength) : 0.0;
+          // ε against the neighbours L[r] will have: the last one kept (L[w − 1]) and the next.
+          double tiny = tinyHere;
+          if (w > 0 && L[w - 1].b1 >= L[r].b0 - tinyKept) tiny = std::max(tiny, tinyKept);
+          if (r + 1 < m && L[r + 1].b0 <= L[r].b1 + tinyNext) tiny = std::max(tiny, tinyNext);
+          if (L[r].length() >= tiny) {
+            if (w != r) L[w] = L[r];
+            ++w;
+            tinyKept = tinyHere;
+            tinyHere = tinyNext;
+            continue;
+          }
+          removed = true;
+          ++report.degeneracies[DegeneracyKind::D1];
+          const Interval t = L[r];
+          report.removedTiny.emplace_back(t.b0, t.b1);
+          // An Eq. 1 breakpoint at an end of the removed sliver now joins a neighbour that grew
+          // over the sliver to the one beyond, which Eq. 1 never made equal: it is no breakpoint
+          // any more
+          // (corpus/fuzz_edge_update/regress/continuous-at-eq1-breakpoint-of-removed-sliver).
+          std::erase_if(report.eq1Breakpoints, [&](double x) { return x == t.b0 || x == t.b1; });
+          // Prefer the neighbour with the coarser scale: merging into the same-scale one would only
+          // leave a sliver as thin as before beside the coarse one. Between equal scales, prefer
+          // the one that needs no second propagation (a pending one for a pending sliver).
+          const bool prevTouches = w > 0 && L[w - 1].b1 >= t.b0 - tiny;
+          const bool nextTouches = r + 1 < m && L[r + 1].b0 <= t.b1 + tiny;
+          bool intoNext = nextTouches && !prevTouches;
+          if (nextTouches && prevTouches) {
+            intoNext = tinyNext > tinyKept || (tinyNext == tinyKept && t.pending() &&
+                                               L[r + 1].pending() && !L[w - 1].pending());
+          }
+          if (intoNext || prevTouches) {
+            Interval& into = intoNext ? L[r + 1] : L[w - 1];
+            if (intoNext) {
+              setRange(into, std::min(into.b0, t.b0), into.b1);
+            } else {
+              setRange(into, into.b0, std::max(into.b1, t.b1));
+            }
+            if (t.pending() && !into.pending()) grewUnpropagated(into);
+          }
+          tinyHere = tinyNext;  // L[w − 1] and its ε stay the last kept
+        }
+        m = w;
+      }
+
+      // --- Step 4: sew gaps shorter than ε (D3); an overlap left here (D2) is resolved as in
+      //     step 1 (overlapMeetingPoint). The paper sews a gap at its midpoint; where only one side
+      //     is still pending we move that side's end across the whole gap instead, so the
+      //     propagated side need not be propagated again (either way each point of the gap takes a
+      //     neighbour's value, which is all step 4 promises). The edge's ends count as neighbours.
+      if (m > 0) {
+        Interval& front = L[0];
+        if (atFront && front.b0 > 0.0 && front.b0 < tinyLength(front, edgeLength)) {
+          ++report.degeneracies[DegeneracyKind::D3];
+          if (!front.pending()) grewUnpropagated(front);
+          setRange(front, 0.0, front.b1);
+        }
+        Interval& back = L[m - 1];
+        if (atBack && back.b1 < edgeLength && edgeLength - back.b1 < tinyLength(back, edgeLength)) {
+          ++report.degeneracies[DegeneracyKind::D3];
+          if (!back.pending()) grewUnpropagated(back);
+          setRange(back, back.b0, edgeLength);
+        }
+        for (std::size_t k = 0; k + 1 < m; ++k) {
+          Interval& p = L[k];
+          Interval& q = L[k + 1];
+          const double gap = q.b0 - p.b1;
+          if (gap == 0.0) continue;
+          const double tiny = std::max(tinyLength(p, edgeLength), tinyLength(q, edgeLength));
+          if (gap > 0.0) {
+            // (A flat vertex's shadow, kFlatVertexAngle × the rays' length, is below ε here; wider
+        // shadows are closed when the wavefront has passed: tol::kShadowSewRel.)
+        if (gap >= tiny) continue;
+            ++report.degeneracies[DegeneracyKind::D3];
+            if (p.pending() && !q.pending()) {
+              setRange(p, p.b0, q.b0);
+            } else if (q.pending() && !p.pending()) {
+              setRange(q, p.b1, q.b1);
+            } else {
+              const double mid = 0.5 * (p.b1 + q.b0);
+              if (!p.pending()) grewUnpropagated(p);
+              if (!q.pending()) grewUnpropagated(q);
+              setRange(p, p.b0, mid);
+              setRange(q, mid, q.b1);
+            }
+          } else {
+            if (gap <= -tiny) continue;
+            ++report.degeneracies[DegeneracyKind::D2];
+            const double meet = overlapMeetingPoint(p, q, q.b0, p.b1, edgeLength);
+            setRange(p, p.b0, meet);
+            setRange(q, meet, q.b1);
+          }
+        }
+      }
+    }
+
+    // --- Step 5: merge neighbours with the same pseudo-source (and the same propagation state:
+    //     merging a propagated interval into a pending one would propagate it a second time).
+    {
+      std::size_t w = 0;
+      for (std::size_t r = 0; r < m; ++r) {
+        if (w > 0 && L[w - 1].b1 == L[r].b0 && L[w - 1].pending() == L[r].pending() &&
+            sameSource(L[w - 1], L[r], edgeLength)) {
+          setRange(L[w - 1], L[w - 1].b0, L[r].b1);
+          L[w - 1].flags |= static_cast<std::uint8_t>(L[r].flags & kFromIncoming);
+          continue;
+        }
         if (w != r) L[w] = L[r];
         ++w;
-        tinyKept = tinyHere;
-        tinyHere = tinyNext;
-        continue;
       }
-      removed = true;
-      ++report.degeneracies[DegeneracyKind::D1];
-      const Interval t = L[r];
-      report.removedTiny.emplace_back(t.b0, t.b1);
-      // An Eq. 1 breakpoint at an end of the removed sliver now joins a neighbour that grew over
-      // the sliver to the one beyond, which Eq. 1 never made equal: it is no breakpoint any more
-      // (corpus/fuzz_edge_update/regress/continuous-at-eq1-breakpoint-of-removed-sliver).
-      std::erase_if(report.eq1Breakpoints, [&](double x) { return x == t.b0 || x == t.b1; });
-      // Prefer the neighbour with the coarser scale: merging into the same-scale one would only
-      // leave a sliver as thin as before beside the coarse one. Between equal scales, prefer the
-      // one that needs no second propagation (a pending one for a pending sliver).
-      const bool prevTouches = w > 0 && L[w - 1].b1 >= t.b0 - tiny;
-      const bool nextTouches = r + 1 < m && L[r + 1].b0 <= t.b1 + tiny;
-      bool intoNext = nextTouches && !prevTouches;
-      if (nextTouches && prevTouches) {
-        intoNext = tinyNext > tinyKept ||
-                   (tinyNext == tinyKept && t.pending() && L[r + 1].pending() && !L[w - 1].pending());
-      }
-      if (intoNext || prevTouches) {
-        Interval& into = intoNext ? L[r + 1] : L[w - 1];
-        if (intoNext) {
-          setRange(into, std::min(into.b0, t.b0), into.b1);
-        } else {
-          setRange(into, into.b0, std::max(into.b1, t.b1));
-        }
-        if (t.pending() && !into.pending()) grewUnpropagated(into);
-      }
-      tinyHere = tinyNext;  // L[w − 1] and its ε stay the last kept
+      m = w;
     }
-    m = w;
-  }
 
-  // --- Step 4: sew gaps shorter than ε (D3); an overlap left here (D2) is resolved as in
-  //     step 1 (overlapMeetingPoint). The paper sews a gap at its midpoint; where only one side is still pending we
-  //     move that side's end across the whole gap instead, so the propagated side need not be
-  //     propagated again (either way each point of the gap takes a neighbour's value, which is
-  //     all step 4 promises). The edge's ends count as neighbours.
-  if (m > 0) {
-    Interval& front = L[0];
-    if (atFront && front.b0 > 0.0 && front.b0 < tinyLength(front, edgeLength)) {
-      ++report.degeneracies[DegeneracyKind::D3];
-      if (!front.pending()) grewUnpropagated(front);
-      setRange(front, 0.0, front.b1);
+    for (std::size_t k = 0; k < m; ++k) {
+      if (L[k].flags & kFromIncoming) report.incomingSurvived = true;
+      L[k].flags &= static_cast<std::uint8_t>(~kFromIncoming);
     }
-    Interval& back = L[m - 1];
-    if (atBack && back.b1 < edgeLength && edgeLength - back.b1 < tinyLength(back, edgeLength)) {
-      ++report.degeneracies[DegeneracyKind::D3];
-      if (!back.pending()) grewUnpropagated(back);
-      setRange(back, back.b0, edgeLength);
-    }
-    for (std::size_t k = 0; k + 1 < m; ++k) {
-      Interval& p = L[k];
-      Interval& q = L[k + 1];
-      const double gap = q.b0 - p.b1;
-      if (gap == 0.0) continue;
-      const double tiny = std::max(tinyLength(p, edgeLength), tinyLength(q, edgeLength));
-      if (gap > 0.0) {
-        // The shadow a flat vertex leaves grows with the distance (see tol::kFlatVertexAngle;
-        // wider shadows are closed when the wavefront has passed: tol::kShadowSewRel).
-        const double shadow =
-            tol::kFlatVertexAngle * std::min(p.distanceAt(p.b1), q.distanceAt(q.b0));
-        if (gap >= std::max(tiny, shadow)) continue;
-        ++report.degeneracies[DegeneracyKind::D3];
-        if (p.pending() && !q.pending()) {
-          setRange(p, p.b0, q.b0);
-        } else if (q.pending() && !p.pending()) {
-          setRange(q, p.b1, q.b1);
-        } else {
-          const double mid = 0.5 * (p.b1 + q.b0);
-          if (!p.pending()) grewUnpropagated(p);
-          if (!q.pending()) grewUnpropagated(q);
-          setRange(p, p.b0, mid);
-          setRange(q, mid, q.b1);
-        }
-      } else {
-        if (gap <= -tiny) continue;
-        ++report.degeneracies[DegeneracyKind::D2];
-        const double meet = overlapMeetingPoint(p, q, q.b0, p.b1, edgeLength);
-        setRange(p, p.b0, meet);
-        setRange(q, meet, q.b1);
-      }
-    }
-  }
+    out.resize(m);
 
-  // --- Step 5: merge neighbours with the same pseudo-source (and the same propagation state:
-  //     merging a propagated interval into a pending one would propagate it a second time).
-  {
-    std::size_t w = 0;
-    for (std::size_t r = 0; r < m; ++r) {
-      if (w > 0 && L[w - 1].b1 == L[r].b0 && L[w - 1].pending() == L[r].pending() &&
-          sameSource(L[w - 1], L[r], edgeLength)) {
-        setRange(L[w - 1], L[w - 1].b0, L[r].b1);
-        L[w - 1].flags |= static_cast<std::uint8_t>(L[r].flags & kFromIncoming);
-        continue;
-      }
-      if (w != r) L[w] = L[r];
-      ++w;
-    }
-    m = w;
-  }
-
-  for (std::size_t k = 0; k < m; ++k) {
-    if (L[k].flags & kFromIncoming) report.incomingSurvived = true;
-    L[k].flags &= static_cast<std::uint8_t>(~kFromIncoming);
-  }
-  out.resize(m);
-
-  const auto unchanged = [](const Interval& a, const Interval& b) {
-    return a.b0 == b.b0 && a.b1 == b.b1 && a.source == b.source && a.sigma == b.sigma &&
-           a.pending() == b.pending();
-  };
-  const bool frontKept = s0 == 0 || (m > 0 && unchanged(out.front(), list_[s0]));
-  const bool backKept = s1 == n || (m > 0 && unchanged(out.back(), list_[s1 - 1]));
-  if (frontKept && backKept) break;
-  if (!frontKept) s0 = s0 >= 2 ? s0 - 2 : 0;
-  if (!backKept) s1 = std::min(n, s1 + 2);
-  report.clear();
+    const auto unchanged = [](const Interval& a, const Interval& b) {
+      return a.b0 == b.b0 && a.b1 == b.b1 && a.source == b.source && a.sigma == b.sigma &&
+             a.pending() == b.pending();
+    };
+    const bool frontKept = s0 == 0 || (m > 0 && unchanged(out.front(), list_[s0]));
+    const bool backKept = s1 == n || (m > 0 && unchanged(out.back(), list_[s1 - 1]));
+    if (frontKept && backKept) break;
+    if (!frontKept) s0 = s0 >= 2 ? s0 - 2 : 0;
+    if (!backKept) s1 = std::min(n, s1 + 2);
+    report.clear();
   }
 
   // --- Splice the rewritten slice back in place of [s0, s1).

@@ -352,7 +352,8 @@ void GeodesicSolver::addInterval(Index edge, const Interval& w, const Fig6Branch
   EdgeIntervals& list = edges_[edge];
   if (observer_ != nullptr) before_.assign(list.intervals().begin(), list.intervals().end());
   list.insert(w, length, report_, scratch_);
-  for (DegeneracyKind k : {DegeneracyKind::D1, DegeneracyKind::D2, DegeneracyKind::D3, DegeneracyKind::D4})
+  for (DegeneracyKind k :
+       {DegeneracyKind::D1, DegeneracyKind::D2, DegeneracyKind::D3, DegeneracyKind::D4})
     counters_[k] += report_.degeneracies[k];  // (Algorithm 2 finds only these)
 
   // A fresh queue entry for every pending interval that is new or whose smallest distance moved;
@@ -408,7 +409,9 @@ void GeodesicSolver::finish(const SolveOptions& options, double radius) {
 }
 
 // ===  Queries ====================================================================================
-double GeodesicSolver::distance(const SurfacePoint& p) const { return resolvedDistance(resolve(mesh_, p)); }
+double GeodesicSolver::distance(const SurfacePoint& p) const {
+  return resolvedDistance(resolve(mesh_, p));
+}
 
 double GeodesicSolver::resolvedDistance(const ResolvedPoint& p) const {
   double best = kInfinity;
@@ -429,7 +432,8 @@ double GeodesicSolver::resolvedDistance(const ResolvedPoint& p) const {
         const Vec2 q = pointInFaceFrame(mesh_, p, f, e);
         for (Index v : mesh_.face(f)) {
           const ResolvedPoint corner{SurfacePoint::Kind::Vertex, v, 0.0, {}, mesh_.position(v)};
-          best = std::min(best, vertexDistance_[v] + (pointInFaceFrame(mesh_, corner, f, e) - q).norm());
+          best = std::min(best,
+                          vertexDistance_[v] + (pointInFaceFrame(mesh_, corner, f, e) - q).norm());
         }
         for (const ResolvedPoint& src : sources_) {
           const bool touches =

@@ -212,6 +212,24 @@ TEST(Algorithm2, AnEq1BreakpointAtARemovedSliverIsNoLongerABreakpoint) {
   }
 }
 
+TEST(Algorithm2, AFarPseudoSourceDoesNotWidenWhatStep4Sews) {
+  // Regression (corpus/fuzz_edge_update/regress/pointwise-min-shadow-width-counted-sigma): step 4
+  // used to sew up to kFlatVertexAngle × the whole distance, σ included: with σ = 3.2e12 that is
+  // 3.2, and the old interval was stretched over [0, 0.0094), where only the new one reaches (the
+  // old one's values there are not paths). A shadow widens along the rays, not with σ.
+  const double L = 7864320.0045219837;
+  EdgeIntervals list;
+  list.assign({make(0.0094371840054263811, 4980736.0094371838,
+                    Vec2(-8847360, 524287.99252889602), 3229815406592.0)});
+  Interval in = make(0.0, 65536.0, Vec2(-8847360, 5636096.0074711042), 3229815406592.0);
+  in.side = 1;
+  EdgeUpdateReport report;
+  std::vector<Interval> scratch;
+  list.insert(in, L, report, scratch);
+  EXPECT_DOUBLE_EQ(list.distanceAt(0.0), in.distanceAt(0.0));
+  EXPECT_DOUBLE_EQ(list.distanceAt(0.005), in.distanceAt(0.005));
+}
+
 TEST(Algorithm2, D3TinyGapIsSewnAtTheMidpoint) {
   Edge1 e;
   e.insert(make(0.0, 5.0, Vec2(2.0, 1.0), 0.0));

@@ -162,14 +162,14 @@ void InvariantChecker::onEdgeUpdate(const EdgeUpdateEvent& e) {
   xs.push_back(0.5 * (e.incoming.b0 + e.incoming.b1));
   double worst = 0.0;
   std::string where;
-  // Each function counts where it covers x up to the slack step 4 may sew (ε, or a flat vertex's
-  // shadow at that distance): a sewn end is part of the repaired list by contract.
+  // Each function counts where it covers x up to the slack step 4 may sew (ε): a sewn end is
+  // part of the repaired list by contract.
   double tiny = tol::kTinyIntervalRel * e.edgeLength;
   for (const Interval& w : e.before) tiny = std::max(tiny, tinyLength(w, e.edgeLength));
   tiny = std::max(tiny, tinyLength(e.incoming, e.edgeLength));
   auto valueWithSlack = [&](const Interval& w, double x) {
     const double v = w.distanceAt(x);
-    const double slack = std::max(tinyLength(w, e.edgeLength), tol::kFlatVertexAngle * v);
+    const double slack = tinyLength(w, e.edgeLength);
     return x >= w.b0 - slack && x <= w.b1 + slack ? v : INFINITY;
   };
   auto insideRemovedTiny = [&](double x) {

@@ -644,6 +644,10 @@ std::optional<FuzzCase> decode(FuzzTarget t, std::span<const std::uint8_t> bytes
       if (!(c.edgeLength > 0.0) || !(c.incoming.b0 >= 0.0 && c.incoming.b1 <= c.edgeLength &&
                                      c.incoming.b0 < c.incoming.b1))
         return std::nullopt;
+      // As for the binary form: Algorithm 2 starts from a list step 6 accepts; a list it rejects
+      // (an interval past the edge's end, two overlapping) tests nothing.
+      std::string why;
+      if (!InvariantChecker::checkList(c.before, c.edgeLength, why).empty()) return std::nullopt;
       return c;
     } catch (const InputError&) {
       return std::nullopt;

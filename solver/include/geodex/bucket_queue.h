@@ -138,7 +138,8 @@ class BucketQueue {
 
   std::uint64_t bucketOf(double key) const {
     const double b = key * perWidth_;
-    const std::uint64_t k = b < 9.0e18 ? static_cast<std::uint64_t>(b) : std::uint64_t{9000000000000000000u};
+    const std::uint64_t k =
+        b < 9.0e18 ? static_cast<std::uint64_t>(b) : std::uint64_t{9000000000000000000u};
     return k < current_ ? current_ : k;
   }
 

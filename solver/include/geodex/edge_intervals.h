@@ -14,10 +14,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <span>
 #include <utility>
-#include <cstddef>
 #include <vector>
 
 #include "geodex/degeneracy.h"

@@ -14,11 +14,11 @@
 #include <span>
 #include <vector>
 
+#include "geodex/bucket_queue.h"
 #include "geodex/degeneracy.h"
 #include "geodex/edge_intervals.h"
 #include "geodex/mesh.h"
 #include "geodex/observer.h"
-#include "geodex/bucket_queue.h"
 #include "geodex/surface_point.h"
 
 namespace geodex {
@@ -36,14 +36,15 @@ struct SolveOptions {
 };
 
 struct SolveStats {
-  std::uint64_t intervalsCreated = 0;    ///< intervals handed to Algorithm 2
-  std::uint64_t intervalsPropagated = 0; ///< windows popped and propagated across a face
-  std::uint64_t pseudoSourceEvents = 0;  ///< saddle/boundary vertices turned into pseudo-sources
+  std::uint64_t intervalsCreated = 0;     ///< intervals handed to Algorithm 2
+  std::uint64_t intervalsPropagated = 0;  ///< windows popped and propagated across a face
+  std::uint64_t pseudoSourceEvents = 0;   ///< saddle/boundary vertices turned into pseudo-sources
   std::uint64_t maxIntervalsPerEdge = 0;
   std::uint64_t intervalsAtEnd = 0;
-  /// Thin gaps closed once the wavefront had passed (tol::kShadowSewRel; EdgeIntervals::closeShadows).
+  /// Thin gaps closed once the wavefront had passed (tol::kShadowSewRel;
+  /// EdgeIntervals::closeShadows).
   std::uint64_t shadowsClosed = 0;
-  double radius = kInfinity;             ///< distances up to this are final (inf: ran to the end)
+  double radius = kInfinity;  ///< distances up to this are final (inf: ran to the end)
 };
 
 /// One point of a geodesic path.

@@ -17,8 +17,8 @@
 namespace geodex {
 
 struct Interval {
-  double b0 = 0.0;  ///< range start on the edge, 0 <= b0 < b1 <= edge length
-  double b1 = 0.0;  ///< range end
+  double b0 = 0.0;        ///< range start on the edge, 0 <= b0 < b1 <= edge length
+  double b1 = 0.0;        ///< range end
   Vec2 source{0.0, 0.0};  ///< unfolded pseudo-source (x along the edge, y >= 0 height)
   double sigma = 0.0;     ///< σ: geodesic length from the real source to the pseudo-source
   /// What the pseudo-source is, for path tracing: >= 0 a mesh vertex (a saddle or boundary

@@ -38,7 +38,7 @@ class IntervalPool {
   void recycle();
 
  private:
-  static int classOf(std::size_t capacity);  // -1 beyond the largest class
+  static int classOf(std::size_t capacity);   // -1 beyond the largest class
   std::vector<Interval*> chunks_;             // kChunk intervals each
   std::size_t chunk_ = 0;                     // the chunk being carved
   std::size_t used_ = 0;                      // intervals carved from it
@@ -68,7 +68,9 @@ struct IntervalAllocator {
     ::operator delete(p, std::align_val_t(alignof(T)));
   }
   template <typename U>
-  bool operator==(const IntervalAllocator<U>& o) const { return pool == o.pool; }
+  bool operator==(const IntervalAllocator<U>& o) const {
+    return pool == o.pool;
+  }
 
   // Lists move with their pool; a copied list keeps allocating from it.
   using propagate_on_container_copy_assignment = std::true_type;

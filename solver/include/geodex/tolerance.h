@@ -26,14 +26,19 @@ inline constexpr double kFlatFaceRel = 1e-12;
 // ===  Geodesic discontinuities (Sect. 3.2 and 4.2, Algorithm 2 steps 3–5) =====================
 
 /// D1: intervals shorter than this × their length scale are removed (merged into a neighbour).
-/// D3: gaps shorter than this × the neighbours' length scale, or than kFlatVertexAngle × the
-///     distance there, are sewn at their midpoint.
+/// D3: gaps shorter than this × the neighbours' length scale are sewn. (That covers a flat
+///     vertex's shadow, kFlatVertexAngle × the rays' length from their unfolded source, which is
+///     at most about twice the length scale; σ does not count: a shadow widens along the rays,
+///     however far their pseudo-source is from the real source. Sewing up to kFlatVertexAngle ×
+///     σ + the rays' length once gave a window a stretch 0.0094 long on an edge 7.9e6 from its
+///     source with σ = 3.2e12, where the neighbour was 1.6e6 shorter: fuzz_edge_update.)
 /// The length scale of an interval is max(edge length, distance from its pseudo-source to the
 /// edge): its ends come from rays cast from that source, so they carry rounding of ~1e-16 × that
 /// distance. (A window from a source 1e5 edge lengths away has ends good to ~1e-11 × the edge
 /// only; measured on tests/unit/geodesic_solver_test.cpp's far-source patch.) See
 /// intervalLengthScale() in edge_intervals.h.
-/// D2: overlaps up to this × edge length are resolved at their midpoint; larger ones are bugs.
+/// D2: overlaps below this × the length scale are resolved where the shorter of the two ends
+///     (at the midpoint where they agree); larger ones are split by Eq. 1.
 inline constexpr double kTinyIntervalRel = 1e-11;
 
 /// A vertex whose height over the opposite edge of one of its faces is below this × that face's
@@ -88,8 +93,9 @@ inline constexpr double kTieRel = 1e-14;
 /// pseudo-source (as the reference code does) multiplies the windows per edge by ~15 for nothing.
 /// Pseudo-sources are boundary vertices, non-manifold vertices, and vertices whose angle sum
 /// exceeds 2π + this. A flat vertex can leave a shadow wedge of at most this angle between the
-/// windows passing either side of it, and rounding more; Algorithm 2 step 4 sews gaps up to
-/// kShadowSewRel × the distance, which closes that wedge at any distance from the vertex.
+/// windows passing either side of it, that × the rays' length wide: below kTinyIntervalRel × the
+/// length scale, which step 4 sews; rounding can leave more, closed when the wavefront has passed
+/// (kShadowSewRel).
 inline constexpr double kFlatVertexAngle = 1e-12;
 
 
@@ -136,11 +142,9 @@ inline double vertexAgreementTolerance(double distance, double edgeLength, doubl
 /// before an update and the incoming interval (Algorithm 2 step 6, full tier), relative to
 /// (distance + edge length). Not a free parameter: it is the sum of what steps 1–5 may move by
 /// contract — a breakpoint left with a mismatch up to kContinuityRel, a tiny interval or gap
-/// (kTinyIntervalRel) absorbed by a neighbour on either side, a flat-vertex shadow sewn
-/// (kFlatVertexAngle × distance), and a tie not taken (kTieRel). (The shadows closed at the end
-/// of a solve, kShadowSewRel, come after the last update it checks.)
-inline constexpr double kPointwiseMinRel =
-    kContinuityRel + 2.0 * kTinyIntervalRel + 2.0 * kFlatVertexAngle + kTieRel;
+/// (kTinyIntervalRel) absorbed by a neighbour on either side, and a tie not taken (kTieRel). (The
+/// shadows closed at the end of a solve, kShadowSewRel, come after the last update it checks.)
+inline constexpr double kPointwiseMinRel = kContinuityRel + 2.0 * kTinyIntervalRel + kTieRel;
 
 // ===  Path tracing (path.cpp) ===================================================================
 
