@@ -381,7 +381,14 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
           double tiny = tinyHere;
           if (w > 0 && L[w - 1].b1 >= L[r].b0 - tinyKept) tiny = std::max(tiny, tinyKept);
           if (r + 1 < m && L[r + 1].b0 <= L[r].b1 + tinyNext) tiny = std::max(tiny, tinyNext);
-          if (L[r].length() >= tiny) {
+          // An edge shorter than ε has nothing but D1 slivers: the last one left is the edge's
+          // distance to the precision its source allows, and step 4 sews it to both ends.
+          // Removing it too left the edge uncovered (corpus/fuzz_propagation/regress/
+          // full-coverage-edge-shorter-than-epsilon-lost-its-last-interval).
+          const bool lastOnShortEdge = edgeLength < tiny &&
+                                       (w == 0 || L[w - 1].b1 < L[r].b0 - tinyKept) &&
+                                       (r + 1 == m || L[r + 1].b0 > L[r].b1 + tinyNext);
+          if (L[r].length() >= tiny || lastOnShortEdge) {
             if (w != r) L[w] = L[r];
             ++w;
             tinyKept = tinyHere;
@@ -446,9 +453,9 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
           if (gap == 0.0) continue;
           const double tiny = std::max(tinyLength(p, edgeLength), tinyLength(q, edgeLength));
           if (gap > 0.0) {
-            // (A flat vertex's shadow, kFlatVertexAngle × the rays' length, is below ε here; wider
-        // shadows are closed when the wavefront has passed: tol::kShadowSewRel.)
-        if (gap >= tiny) continue;
+            // (A flat vertex's shadow, kFlatVertexAngle × the rays' length, is below ε here;
+            // wider shadows are closed when the wavefront has passed: tol::kShadowSewRel.)
+            if (gap >= tiny) continue;
             ++report.degeneracies[DegeneracyKind::D3];
             if (p.pending() && !q.pending()) {
               setRange(p, p.b0, q.b0);

@@ -212,39 +212,58 @@ void GeodesicSolver::createPseudoSourceWindows(Index v, double sigma, std::int32
 }
 
 // v lies on the edge opposite it in face f (a zero-area face, or one so thin that v's window on
-// that edge is a D1 sliver): v is a point of that edge, and its fan into the face g across the
+// that edge is a D1 sliver): v is a point of that edge, and its fan into the face across the
 // edge (Fig. 3c's additional intervals, for a face v touches geometrically but not in the mesh's
 // connectivity) is seeded now, as for an edge-point source. Left to v's window on the edge, it
 // was lost: the direct windows through f tie with it at v and are shorter everywhere else, so
-// Algorithm 2 cut it to nothing before it was propagated, and the shadow of v in g was reached
-// the long way round (31 fuzz_solver findings, corpus/fuzz_solver/regress/*zero-area-saddle*).
-// When g is zero-area too with its apex u at the same point, u is that point again: it becomes
-// a pseudo-source at the same distance (its own angle sum may well read 2π).
+// Algorithm 2 cut it to nothing before it was propagated, and the shadow of v across the edge was
+// reached the long way round (31 fuzz_solver findings, corpus/fuzz_solver/regress/*zero-area*).
 void GeodesicSolver::seedAcrossVertexOnEdge(Index v, Index f, const FaceFrame& fr, double sigma,
                                             std::int32_t origin, int depth, Index from) {
   const Edge& E = mesh_.edge(fr.edge);
   const double scale = std::max(E.length, fr.apexPos.norm());
   if (!(fr.apexPos.y() <= tol::kVertexOnEdgeRel * scale)) return;
   if (!(fr.apexPos.x() > 0.0 && fr.apexPos.x() < E.length)) return;
+  seedAcrossPointOnEdge(v, fr.edge, f, fr.apexPos.x(), sigma + fr.apexPos.y(), origin, depth, from);
+}
+
+// The point at x along edge e (from its vertex[0]), where the saddle v lies, at distance `at`:
+// its fan into the face g across e from f. When g is zero-area too, the point lies on another of
+// g's edges and the fan goes on across that one (a stack of zero-area faces along one line has
+// no inside to spread in: corpus/fuzz_solver/regress/edge-query-saddle-on-a-stack-of-zero-area-
+// faces); when g's apex u is the point itself, u becomes a pseudo-source at the same distance
+// (its own angle sum may well read 2π), even where the direct windows have set its distance
+// already (to rounding), but not back to where this came from.
+void GeodesicSolver::seedAcrossPointOnEdge(Index v, Index e, Index f, double x, double at,
+                                           std::int32_t origin, int depth, Index from) {
+  const Edge& E = mesh_.edge(e);
   const Index g = E.face[0] == f ? E.face[1] : E.face[0];
   if (g == kNoIndex || g == f) return;
-  const double at = sigma + fr.apexPos.y();  // the point of the edge below v
-  const FaceFrame& gf = mesh_.frame(g, fr.edge);
+  const FaceFrame& gf = mesh_.frame(g, e);
   const double gScale = std::max(E.length, gf.apexPos.norm());
-  if (gf.apexPos.y() <= tol::kVertexOnEdgeRel * gScale &&
-      std::abs(gf.apexPos.x() - fr.apexPos.x()) <= tol::kCoincideRel * gScale) {
-    // u is v again: its fan too, even where the direct windows have set its distance already
-    // (to rounding); not back to where this came from.
-    const Index u = gf.apex;
-    if (depth < kMaxVertexOnEdgeDepth && u != v && u != from &&
-        at <= vertexDistance_[u] + tol::kTieRel * at) {
-      vertexDistance_[u] = std::min(vertexDistance_[u], at);
-      createPseudoSourceWindows(u, at, origin, depth + 1, v);
+  if (gf.apexPos.y() <= tol::kVertexOnEdgeRel * gScale) {
+    if (depth >= kMaxVertexOnEdgeDepth) return;
+    if (std::abs(gf.apexPos.x() - x) <= tol::kCoincideRel * gScale) {
+      const Index u = gf.apex;
+      if (u != v && u != from && at <= vertexDistance_[u] + tol::kTieRel * at) {
+        vertexDistance_[u] = std::min(vertexDistance_[u], at);
+        createPseudoSourceWindows(u, at, origin, depth + 1, v);
+      }
+      return;
     }
+    // On the line of g the point lies between v0 and the apex or between the apex and v2.
+    const bool onE1 = x < gf.apexPos.x();
+    const Index next = onE1 ? gf.edgeToV0 : gf.edgeToV2;
+    const Index start = onE1 ? E.vertex[0] : gf.apex;  // the end of `next` the point is measured from
+    const double along = onE1 ? x : x - gf.apexPos.x();
+    const Edge& N = mesh_.edge(next);
+    const double nx = N.vertex[0] == start ? along : N.length - along;
+    if (!(nx > 0.0 && nx < N.length)) return;
+    seedAcrossPointOnEdge(v, next, g, nx, at, origin, depth + 1, from);
     return;
   }
-  const ResolvedPoint p{SurfacePoint::Kind::Edge, fr.edge, fr.apexPos.x(), {}, mesh_.position(v)};
-  seedFaceFromPoint(g, p, fr.edge, at, origin);
+  const ResolvedPoint p{SurfacePoint::Kind::Edge, e, x, {}, mesh_.position(v)};
+  seedFaceFromPoint(g, p, e, at, origin);
 }
 
 // ===  One propagation case =======================================================================

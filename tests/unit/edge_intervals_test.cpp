@@ -230,6 +230,26 @@ TEST(Algorithm2, AFarPseudoSourceDoesNotWidenWhatStep4Sews) {
   EXPECT_DOUBLE_EQ(list.distanceAt(0.005), in.distanceAt(0.005));
 }
 
+TEST(Algorithm2, AnEdgeShorterThanEpsilonKeepsItsLastInterval) {
+  // Regression (corpus/fuzz_propagation/regress/full-coverage-edge-shorter-than-epsilon-lost-its-
+  // last-interval): an edge 1.1e-8 long seen from a source 3.3e5 away has ε = 3.3e-6 > its
+  // length, so every window on it is a D1 sliver; step 3 merged them into each other and then
+  // removed the last one too, leaving the edge uncovered. The nearer window must be the edge's.
+  const double L = 1.1313708498984759e-08;
+  EdgeIntervals list;
+  EdgeUpdateReport report;
+  std::vector<Interval> scratch;
+  const Interval far = make(0.0, L, Vec2(0.0, 0.0), 327689.0);
+  const Interval near = make(0.0, L, Vec2(7.78e-09, 327680.0), 0.0);
+  list.insert(far, L, report, scratch);
+  list.insert(near, L, report, scratch);
+  ASSERT_EQ(list.intervals().size(), 1u);
+  EXPECT_EQ(list.intervals()[0].b0, 0.0);
+  EXPECT_EQ(list.intervals()[0].b1, L);
+  EXPECT_DOUBLE_EQ(list.distanceAt(0.0), near.distanceAt(0.0));
+  EXPECT_DOUBLE_EQ(list.distanceAt(L), near.distanceAt(L));
+}
+
 TEST(Algorithm2, D3TinyGapIsSewnAtTheMidpoint) {
   Edge1 e;
   e.insert(make(0.0, 5.0, Vec2(2.0, 1.0), 0.0));

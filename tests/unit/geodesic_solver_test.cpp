@@ -409,6 +409,29 @@ TEST(SolverRegression, ASaddleOnTheEdgeOfAZeroAreaFaceSpreadsIntoTheFaceAcross) 
   EXPECT_NEAR(d[5], 1.5 + std::sqrt(2.0), 1e-12);
 }
 
+TEST(SolverRegression, ASaddleOnAStackOfZeroAreaFacesSpreadsIntoTheFirstRealFace) {
+  // A planar, folded mesh (shrunk from corpus/fuzz_solver/regress/edge-query-saddle-on-a-stack-
+  // of-zero-area-faces). Vertex 8 = (8, 5) is a saddle (angle sum 2π + 0.93) lying on edge 9–13
+  // of the zero-area face (8, 9, 13); across that edge the face (9, 14, 13) is zero-area too,
+  // with its apex 14 = (9, 5) elsewhere on the line, so the point (8, 5) lies on its edge 13–14,
+  // and across that is the real face (13, 14, 17). The shortest path from vertex 0 to vertex 17
+  // bends at the saddle: |0 − 8| + |8 − 17| = √45 + √10. Vertex 8's fan used to stop at the
+  // zero-area face's edges, where the direct windows beat it everywhere but at its one point, and
+  // D(17) came out 10.2086 (the far component (10, 16, 15) only changes the queue's order).
+  TriangleSoup soup;
+  soup.positions = {Vec3(2, 2, 0),  Vec3(4, 2, 0),  Vec3(6, 2, 0),  Vec3(8, 2, 0),  Vec3(9, 1, 0),
+                    Vec3(2, 5, 0),  Vec3(3, 4, 0),  Vec3(5, 3, 0),  Vec3(8, 5, 0),  Vec3(11, 5, 0),
+                    Vec3(13, 4, 0), Vec3(5, 7, 0),  Vec3(6, 6, 0),  Vec3(7, 5, 0),  Vec3(9, 5, 0),
+                    Vec3(11, 5, 0), Vec3(13, 5, 0), Vec3(9, 8, 0)};
+  soup.faces = {{0, 1, 5},  {1, 6, 5},  {1, 2, 6},   {2, 7, 6},   {3, 8, 7},
+                {3, 4, 8},  {4, 9, 8},  {6, 7, 11},  {7, 12, 11}, {7, 8, 12},
+                {8, 13, 12}, {8, 9, 13}, {9, 14, 13}, {10, 16, 15}, {13, 14, 17}};
+  const Mesh mesh(soup);
+  ASSERT_TRUE(mesh.isPseudoSourceVertex(8));
+  const std::vector<double> d = solveChecked(mesh, {SurfacePoint::atVertex(0)});
+  EXPECT_NEAR(d[17], std::sqrt(45.0) + std::sqrt(10.0), 1e-12);
+}
+
 TEST(SolverRegression, AnEdgeSourceAHairFromAVertexKeepsEveryEdgeThereCovered) {
   // A 2×2 grid of unit cells (planar, convex: distances are Euclidean) and a source on the
   // diagonal 4–8 at 6.4e-10 of its length from vertex 4, just outside the snapping band. Seen

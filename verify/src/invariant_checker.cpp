@@ -92,7 +92,8 @@ std::string InvariantChecker::checkList(std::span<const Interval> list, double L
       return "in-range";
     }
     const double tiny = tinyLengthInList(list, i, L);
-    if (w.b1 - w.b0 < tiny) {
+    // (An interval that is the whole edge has nothing to merge into: an edge shorter than ε.)
+    if (w.b1 - w.b0 < tiny && !(w.b0 == 0.0 && w.b1 == L)) {
       os << "interval " << i << " " << describe(w) << " is shorter than epsilon = " << tiny;
       why = os.str();
       return "no-tiny-interval";

@@ -117,6 +117,8 @@ class GeodesicSolver {
   void seedCorner(Index v, double d);
   void seedAcrossVertexOnEdge(Index v, Index f, const FaceFrame& fr, double sigma,
                               std::int32_t origin, int depth, Index from);
+  void seedAcrossPointOnEdge(Index v, Index e, Index f, double x, double at, std::int32_t origin,
+                             int depth, Index from);
   /// Zero-area faces stacked on one point hand it on at most this many times.
   static constexpr int kMaxVertexOnEdgeDepth = 4;
   void propagate(Index edge, const Interval& w);

@@ -126,6 +126,15 @@ inline constexpr double kSnapParam = 1e-10;
 /// already 2e-9, far above ε × edge length.
 inline constexpr double kRoundingRel = 1e-14;
 
+/// How far a surface point placed by its 3D position (a + t·(b − a) in doubles, as an oracle
+/// does) may lie from the exact point, relative to the largest coordinate magnitude of the mesh:
+/// each coordinate is rounded once to its ulp (2.2e-16 relative), √3 over the three, with
+/// margin. The solver works with the point's parameters instead, so an oracle comparing
+/// distances between 3D positions owes this for each point it places. It matters where the mesh
+/// is small next to its distance from the origin: 1e-8-long edges at 262144 have positions good
+/// to 6e-11 only (corpus/fuzz_propagation/regress/two-face-distance-point-rounded-far-from-origin).
+inline constexpr double kPositionRoundingRel = 4.0 * 2.220446049250313e-16;
+
 /// How well a vertex distance can agree with what an incident edge gives there (the end-of-run
 /// step-6 invariant 'vertex-agreement', relative to the distance plus the edge's length, as the
 /// Eq. 1 continuity): kContinuityRel, plus the rounding of positions along the *longest* edge at
