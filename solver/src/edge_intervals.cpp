@@ -91,7 +91,7 @@ void keepShorter(const Interval& in, const Interval& old, double edgeLength,
       if (foot > lo && foot < hi) sample[numSamples++] = foot;
   }
   sample[numSamples++] = hi;
-  std::sort(sample + 1, sample + numSamples - 1);
+  if (numSamples == 4 && sample[2] < sample[1]) std::swap(sample[1], sample[2]);  // the two feet
   bool wins[5];
   double f[5], g[5];  // the incoming and the old distance at each sample
   for (int k = 0; k < numSamples; ++k) {

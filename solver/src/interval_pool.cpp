@@ -6,7 +6,10 @@
 namespace geodex {
 namespace {
 
-constexpr std::size_t kChunk = std::size_t{1} << 16;  // intervals per chunk (3 MB)
+constexpr std::size_t kChunk = std::size_t{1} << 16;  // intervals per chunk, at most (3 MB)
+// The first chunk is small and each next one twice the last: a solve on a 50-face mesh (the
+// fuzzers run thousands a second) should not fault in 3 MB.
+constexpr std::size_t kFirstChunk = std::size_t{1} << 10;
 
 // Size classes 1, 2, 3, 4, 5, 6, 7, 8, 10, 12, 15, 18, 22, 27, ... each a quarter above the last,
 // up to one chunk; and, for every capacity up to a chunk, the class that holds it (a table: this
@@ -36,7 +39,7 @@ const SizeClasses& classes() {
 }  // namespace
 
 IntervalPool::~IntervalPool() {
-  for (Interval* c : chunks_) ::operator delete(c, std::align_val_t(alignof(Interval)));
+  for (const Chunk& c : chunks_) ::operator delete(c.data, std::align_val_t(alignof(Interval)));
 }
 
 int IntervalPool::classOf(std::size_t capacity) {
@@ -64,15 +67,19 @@ Interval* IntervalPool::allocate(std::size_t capacity) {
     list.pop_back();
     return p;
   }
-  if (chunks_.empty() || used_ + capacity > kChunk) {  // the rest of this chunk stays unused
-    if (!chunks_.empty()) ++chunk_;
-    if (chunk_ == chunks_.size()) {
-      chunks_.push_back(static_cast<Interval*>(
-          ::operator new(kChunk * sizeof(Interval), std::align_val_t(alignof(Interval)))));
-    }
+  // Carve from the current chunk; the rest of a chunk too full for this block stays unused.
+  while (chunk_ < chunks_.size() && used_ + capacity > chunks_[chunk_].capacity) {
+    ++chunk_;
     used_ = 0;
   }
-  Interval* p = chunks_[chunk_] + used_;
+  if (chunk_ == chunks_.size()) {
+    const std::size_t last = chunks_.empty() ? kFirstChunk / 2 : chunks_.back().capacity;
+    const std::size_t size = std::max(capacity, std::min(kChunk, 2 * last));
+    chunks_.push_back({static_cast<Interval*>(::operator new(
+                           size * sizeof(Interval), std::align_val_t(alignof(Interval)))),
+                       size});
+  }
+  Interval* p = chunks_[chunk_].data + used_;
   used_ += capacity;
   return p;
 }

@@ -39,7 +39,11 @@ class IntervalPool {
 
  private:
   static int classOf(std::size_t capacity);   // -1 beyond the largest class
-  std::vector<Interval*> chunks_;             // kChunk intervals each
+  struct Chunk {
+    Interval* data;
+    std::size_t capacity;  // intervals
+  };
+  std::vector<Chunk> chunks_;                 // each twice the last, up to 3 MB
   std::size_t chunk_ = 0;                     // the chunk being carved
   std::size_t used_ = 0;                      // intervals carved from it
   std::vector<std::vector<Interval*>> free_;  // per size class
