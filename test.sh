@@ -1,14 +1,18 @@
 #!/usr/bin/env bash
 # geodex tests: installs the dependencies, then for each preset configures, builds and runs CTest.
-#   ./test.sh               the release, debug and asan presets
+#   ./test.sh               the release, debug, asan and fuzz presets
 #   ./test.sh debug [...]   the named presets only
-# Measured on 2 cores from a clean tree: release ~1.5 min, debug ~1 min, asan ~3 min.
+# The fuzz preset builds only the libFuzzer targets and the corpus tools and runs the corpus
+# replay plus a 30 s fuzz smoke per target (labels corpus, fuzz-smoke; scripts/fuzz.sh is the
+# full fuzzing job).
 # Every preset is run even when an earlier one fails; the exit code is non-zero if any configure,
 # build or test step failed. One summary line per preset at the end, then "N passed, M failed".
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")"
 
-if [[ $# -gt 0 ]]; then PRESETS=("$@"); else PRESETS=(release debug asan); fi
+if [[ $# -gt 0 ]]; then PRESETS=("$@"); else PRESETS=(release debug asan fuzz); fi
+FUZZ_TARGETS=(fuzz_mesh_io fuzz_predicates fuzz_edge_update fuzz_propagation fuzz_solver
+  geodex_corpus_open_findings geodex_corpus_degeneracy_coverage geodex_make_seeds)
 
 ./scripts/install-deps.sh
 
@@ -27,14 +31,20 @@ for preset in "${PRESETS[@]}"; do
     status=1
     continue
   fi
-  if ! cmake --build --preset "$preset"; then
+  targets=()
+  labels=()
+  if [[ $preset == fuzz ]]; then
+    targets=(--target "${FUZZ_TARGETS[@]}")
+    labels=(-L 'corpus|fuzz-smoke')
+  fi
+  if ! cmake --build --preset "$preset" "${targets[@]}"; then
     summary+=("$preset: FAILED to build ($((SECONDS - start)) s)")
     status=1
     continue
   fi
   build_seconds=$((SECONDS - start))
   mkdir -p build
-  if ctest --preset "$preset" --no-tests=error 2>&1 | tee "$log"; then result=passed; else
+  if ctest --preset "$preset" --no-tests=error "${labels[@]}" 2>&1 | tee "$log"; then result=passed; else
     result=FAILED
     status=1
   fi

@@ -49,7 +49,8 @@ void writeDegeneracyTable(std::ostream& out, const DegeneracyCounters& counters)
   out << "degeneracy rate (G1–G5 over all cases): "
       << percent(counters.geometricTotal(), counters.cases) << '\n';
   out << "mesh-level cases: " << counters.zeroAreaFaces << " windows through zero-area faces, "
-      << counters.sourceOnEdgeLineOutside << " with the source on the edge's line outside\n";
+      << counters.sourceOnEdgeLineOutside << " with the source on the edge's line outside, "
+      << counters.childEdgesSeenFromOutside << " child edges seen from outside the face\n";
 }
 
 }  // namespace geodex::cli

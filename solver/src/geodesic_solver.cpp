@@ -103,6 +103,14 @@ void GeodesicSolver::solve(std::span<const SurfacePoint> sources, const SolveOpt
     w->markPropagated();
     const Interval window = *w;
     propagate(top.edge, window);
+#if defined(GEODEX_FUZZING_BUILD_MODE)
+    // The fuzzing switch: a wavefront that runs away on a fuzzer's mesh (≤ 64 faces) is reported
+    // at once as a bug, not minutes later as a timeout.
+    GEODEX_REQUIRE(stats_.intervalsPropagated <= fuzzingWorkLimit(),
+                   "work limit of the fuzzing build: more than "
+                       << fuzzingWorkLimit() << " windows propagated on " << mesh_.numFaces()
+                       << " faces");
+#endif
   }
   finish(options, radius);
 }
@@ -308,8 +316,19 @@ void GeodesicSolver::propagate(Index edge, const Interval& w) {
       n.b1 = std::clamp(n.b1, 0.0, CE.length);
       if (!(n.b1 > n.b0)) continue;
       // The source lies on the crossed face's side of the new edge (the rays leave the face
-      // through it); rounding can put it a hair across, which is a source on the line.
-      n.source = Vec2(rel.dot(dir), zeroArea ? std::abs(h) : std::max(0.0, interior > 0 ? h : -h));
+      // through it); rounding can put it a hair across, which is a source on the line. Clearly
+      // across, the rays cannot leave through that edge at all: a needle seen end-on from a far
+      // source is collinear with it within kCollinearSin, and the G5 branch hands its short side
+      // the whole edge although every ray passes the needle's far end. Clamped onto the line,
+      // that source would stand 1.5e-8 from a corner 5.2e6 away from it
+      // (corpus/fuzz_propagation/regress/two-face-distance-needle-seen-end-on-from-far-source).
+      const double inward = interior > 0 ? h : -h;
+      if (!zeroArea && inward < 0.0 &&
+          -inward > std::max(tol::kCoincideRel * localScale(local), tol::kCollinearSin * rel.norm())) {
+        ++counters_.childEdgesSeenFromOutside;
+        continue;
+      }
+      n.source = Vec2(rel.dot(dir), zeroArea ? std::abs(h) : std::max(0.0, inward));
       n.sigma = w.sigma;
       n.side = static_cast<std::uint8_t>(mesh_.sideOf(ce, f));
       n.origin = w.origin;

@@ -141,9 +141,11 @@ Mesh::Mesh(TriangleSoup soup) : soup_(std::move(soup)) {
       fr.edgeToV0 = nextHasV0 ? kNext : kPrev;
       fr.edgeToV2 = nextHasV0 ? kPrev : kNext;
 
-      // Corner angle at corner k from atan2(|u × v|, u · v): accurate for needles and caps.
-      const Vec3 u = P[F[f][(k + 1) % 3]] - P[F[f][k]];
-      const Vec3 v = P[F[f][(k + 2) % 3]] - P[F[f][k]];
+      // Corner angle at corner k from atan2(|u × v|, u · v): accurate for needles and caps. The
+      // sides are normalized first: |u × v| squares a product of two lengths, which overflows
+      // for lengths above ~1e77 although each length (kMaxEdgeLength = 1e150) is in range.
+      const Vec3 u = (P[F[f][(k + 1) % 3]] - P[F[f][k]]).normalized();
+      const Vec3 v = (P[F[f][(k + 2) % 3]] - P[F[f][k]]).normalized();
       cornerAngles_[3 * f + k] = std::atan2(u.cross(v).norm(), u.dot(v));
     }
   }

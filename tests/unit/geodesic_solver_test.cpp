@@ -432,6 +432,29 @@ TEST(SolverRegression, ASaddleOnAStackOfZeroAreaFacesSpreadsIntoTheFirstRealFace
   EXPECT_NEAR(d[17], std::sqrt(45.0) + std::sqrt(10.0), 1e-12);
 }
 
+TEST(SolverRegression, ANeedleSeenEndOnFromAFarSourceHandsItsShortSideNothing) {
+  // corpus/fuzz_propagation/regress/two-face-distance-needle-seen-end-on-from-far-source: face
+  // (0, 1, 2) is a needle (edge 0–2 is 3e-11 long) and source vertex 3 lies 5.2e6 away, nearly
+  // on the line of edge 0–1. Seen from that far, s, b1 = v2 and the needle's apex are collinear
+  // within kCollinearSin (G5), and G5 gives e1 (edge 0–2) the whole edge; but the source lies
+  // outside the face across that edge, so no ray leaves through it. Clamped onto the edge's line
+  // the child's source stood 1.5e-8 from vertex 0, which came out 1.5e-8 from the source.
+  TriangleSoup soup;
+  soup.positions = {Vec3(0, 0, 0), Vec3(0, -16, -16), Vec3(-3e-11, 0, 0),
+                    Vec3(9.92e-9, 3670016.0000000014, 3670016.0000000177)};
+  soup.faces = {{0, 1, 2}, {1, 0, 3}};
+  const Mesh mesh(soup);
+  DegeneracyCounters counters;
+  const std::vector<double> d = solveChecked(mesh, {SurfacePoint::atVertex(3)}, &counters);
+  for (Index v : {0u, 1u}) {  // both joined to the source by an edge
+    const double exact = (mesh.position(v) - mesh.position(3)).norm();
+    EXPECT_NEAR(d[v], exact, 1e-12 * exact) << "vertex " << v;
+  }
+  EXPECT_GE(d[2], (mesh.position(2) - mesh.position(3)).norm() * (1.0 - 1e-12));
+  EXPECT_GT(counters[DegeneracyKind::G5], 0u);
+  EXPECT_GT(counters.childEdgesSeenFromOutside, 0u);
+}
+
 TEST(SolverRegression, AnEdgeSourceAHairFromAVertexKeepsEveryEdgeThereCovered) {
   // A 2×2 grid of unit cells (planar, convex: distances are Euclidean) and a source on the
   // diagonal 4–8 at 6.4e-10 of its length from vertex 4, just outside the snapping band. Seen

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <iterator>
 
+#include "geodex/edge_intervals.h"
 #include "geodex/tolerance.h"
 #include "geodex/verify/mesh_generators.h"
 
@@ -107,6 +108,39 @@ TEST(InvariantChecker, LosingCoverageFails) {
   u.incoming = make(2, 8, Vec2(5, 3), 2.0);  // worse everywhere
   u.after = {make(0, 5, Vec2(5, 3), 1.0)};   // but half the edge went missing
   EXPECT_EQ(violatedBy(u), "pointwise-min");
+}
+
+TEST(InvariantChecker, ASewnEndMayTakeTheWorseValueOfTheIntervalThatCoversIt) {
+  // Regression (corpus/fuzz_edge_update/regress/pointwise-min-slack-of-an-interval-the-incoming-
+  // one-covered): the old list starts within its ε of the edge's end, and the incoming interval,
+  // worse there, covers that end. The list is right to start with the incoming interval: the old
+  // one's slack would only have been sewn to the end had nothing covered it. The check demanded
+  // the old one's (better) value carried to x = 0.
+  Update u;
+  const Interval old = make(0.0, 3e-10, Vec2(0, 1), 1.0);  // 2 at x = 0
+  const double start = tinyLength(old, kL);                 // the slack reaches x = 0
+  u.before = {make(start, 3e-10, Vec2(0, 1), 1.0)};
+  u.incoming = make(1e-70, 2e-10, Vec2(0, 1), 2.0);  // 3 at x = 0: worse
+  u.after = {make(0.0, start, Vec2(0, 1), 2.0), u.before[0]};
+  EXPECT_EQ(violatedBy(u), "");
+  // A value none of them offers still fails.
+  u.after[0] = make(0.0, start, Vec2(0, 1), 0.5);
+  EXPECT_EQ(violatedBy(u), "pointwise-min");
+}
+
+TEST(InvariantChecker, AGapBelowTheFarNeighboursEpsilonIsSewnFromTheNearSide) {
+  // Regression (corpus/fuzz_edge_update/regress/pointwise-min-gap-sewn-by-the-far-neighbours-
+  // epsilon): a gap of 1e-9 lies between a near window (ε = 1e-11 × 10) and one whose source is
+  // 316 away (ε = 3.2e-9). Step 4 sews it, as it must, by carrying the near window's end to the
+  // far one's start; the check allowed each function only its own ε of slack.
+  Update u;
+  const double at = kL * 13 / 32;  // a point the check samples
+  u.before = {make(at, kL, Vec2(191, 125))};
+  u.incoming = make(0.0, at - 1e-9, Vec2(5, 1));
+  ASSERT_GT(1e-9, tinyLength(u.incoming, kL));
+  ASSERT_LT(1e-9, tinyLength(u.before[0], kL));
+  u.after = {make(0.0, at, Vec2(5, 1)), u.before[0]};
+  EXPECT_EQ(violatedBy(u), "");
 }
 
 TEST(InvariantChecker, EndOfRunCoverageAndVertexAgreementFail) {

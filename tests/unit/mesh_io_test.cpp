@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -602,6 +603,20 @@ TEST(MeshIoValidate, EdgeLengthsOutsideTheRangeOfDoublesAreRefusedByName) {
     EXPECT_EQ(e.kind(), "edge-length-out-of-range");
     EXPECT_NE(std::string(e.what()).find("edge 0-1"), std::string::npos) << e.what();
   }
+}
+
+TEST(MeshIoValidate, CornerAnglesOfAFaceWithLongInRangeEdgesSumToPi) {
+  // Regression (corpus/fuzz_mesh_io/regress/*corner-angle-cross-product-overflows-on-long-edges):
+  // edges of 1.1e132 and 1.1e24 are inside [kMinEdgeLength, kMaxEdgeLength], but |u × v| of the
+  // unnormalized sides squared a product of two lengths, overflowed to inf, and the sharp corner
+  // came out as π/2 (the face's angles summed to 3π/2).
+  TriangleSoup soup;
+  soup.positions = {Vec3(0, 0, 1.1e132), Vec3(0, 1, 0), Vec3(0, 1.1e24, 0)};
+  soup.faces = {{0, 1, 2}};
+  const Mesh mesh(soup);
+  EXPECT_NEAR(mesh.cornerAngle(0, 0) + mesh.cornerAngle(0, 1) + mesh.cornerAngle(0, 2),
+              std::numbers::pi, 1e-12);
+  EXPECT_LT(mesh.cornerAngle(0, 0), 1e-100);  // the needle's tip: about 1.1e24 / 1.1e132
 }
 
 TEST(MeshIoValidate, DuplicateFace) {

@@ -1,6 +1,7 @@
 #include "geodex/verify/invariant_checker.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <iomanip>
@@ -168,10 +169,11 @@ void InvariantChecker::onEdgeUpdate(const EdgeUpdateEvent& e) {
   double tiny = tol::kTinyIntervalRel * e.edgeLength;
   for (const Interval& w : e.before) tiny = std::max(tiny, tinyLength(w, e.edgeLength));
   tiny = std::max(tiny, tinyLength(e.incoming, e.edgeLength));
+  // The slack is the largest ε of all: step 4 sews a gap below the ε of either interval beside
+  // it, so a near window's end is carried across a gap as wide as a far neighbour's ε
+  // (corpus/fuzz_edge_update/regress/pointwise-min-gap-sewn-by-the-far-neighbours-epsilon).
   auto valueWithSlack = [&](const Interval& w, double x) {
-    const double v = w.distanceAt(x);
-    const double slack = tinyLength(w, e.edgeLength);
-    return x >= w.b0 - slack && x <= w.b1 + slack ? v : INFINITY;
+    return x >= w.b0 - tiny && x <= w.b1 + tiny ? w.distanceAt(x) : INFINITY;
   };
   auto insideRemovedTiny = [&](double x) {
     for (const auto& [lo, hi] : e.report.removedTiny)
@@ -180,9 +182,14 @@ void InvariantChecker::onEdgeUpdate(const EdgeUpdateEvent& e) {
   };
   for (double x : xs) {
     if (insideRemovedTiny(x)) continue;
-    // strict: where the functions really are; loose: with the slack step 4 may sew.
+    // strict: the minimum of the functions where they really are; loose: the minimum with the
+    // slack step 4 may sew; candidates: every value the repaired list may take at x (a sewn end
+    // is one function's value carried across the gap).
     double strict = e.incoming.b0 <= x && x <= e.incoming.b1 ? e.incoming.distanceAt(x) : INFINITY;
     double loose = valueWithSlack(e.incoming, x);
+    std::array<double, 5> candidates{};
+    std::size_t numCandidates = 0;
+    if (std::isfinite(loose)) candidates[numCandidates++] = loose;
     // The old list is sorted: only intervals next to the one starting last before x can reach x,
     // even with the sewing slack.
     const std::ptrdiff_t k = lastStartingBefore(e.before, x);
@@ -190,7 +197,9 @@ void InvariantChecker::onEdgeUpdate(const EdgeUpdateEvent& e) {
          i <= std::min<std::ptrdiff_t>(k + 1, std::ssize(e.before) - 1); ++i) {
       const Interval& w = e.before[i];
       if (w.b0 <= x && x <= w.b1) strict = std::min(strict, w.distanceAt(x));
-      loose = std::min(loose, valueWithSlack(w, x));
+      const double v = valueWithSlack(w, x);
+      if (std::isfinite(v)) candidates[numCandidates++] = v;
+      loose = std::min(loose, v);
     }
     const double got = listDistance(e.after, x);
     double err = 0.0;
@@ -199,9 +208,18 @@ void InvariantChecker::onEdgeUpdate(const EdgeUpdateEvent& e) {
     } else if (!std::isfinite(loose)) {
       err = INFINITY;  // coverage from nowhere
     } else {
+      // The list must take one of the candidate values, never below the loose minimum (a
+      // distance no function offers) and never above the strict one (a function that is there
+      // beats it). Between the two, which sewn value it takes depends on which gap step 4 sewed:
+      // an interval's slack reaches an end of the edge only if nothing else covered that end
+      // (corpus/fuzz_edge_update/regress/pointwise-min-slack-of-an-interval-the-incoming-one-covered).
       const double scale = got + e.edgeLength;
-      err = std::abs(got - loose) / scale;
-      if (std::isfinite(strict)) err = std::min(err, std::abs(got - strict) / scale);
+      double match = INFINITY;
+      for (std::size_t i = 0; i < numCandidates; ++i) match = std::min(match, std::abs(got - candidates[i]));
+      if (std::isfinite(strict)) match = std::min(match, std::abs(got - strict));
+      const double below = std::max(0.0, loose - got);
+      const double above = std::isfinite(strict) ? std::max(0.0, got - strict) : 0.0;
+      err = std::max({match, below, above}) / scale;
     }
     if (!(err <= worst)) {
       worst = err;

@@ -42,6 +42,9 @@ struct DegeneracyCounters {
   /// propagate: their rays run along the edge).
   std::uint64_t zeroAreaFaces = 0;
   std::uint64_t sourceOnEdgeLineOutside = 0;
+  /// Children dropped because their source lies clearly outside the face across their edge
+  /// (the rays cannot leave through it; see GeodesicSolver::propagate).
+  std::uint64_t childEdgesSeenFromOutside = 0;
 
   std::uint64_t& operator[](DegeneracyKind k) { return count[static_cast<std::size_t>(k)]; }
   std::uint64_t operator[](DegeneracyKind k) const { return count[static_cast<std::size_t>(k)]; }
@@ -51,6 +54,7 @@ struct DegeneracyCounters {
     cases += o.cases;
     zeroAreaFaces += o.zeroAreaFaces;
     sourceOnEdgeLineOutside += o.sourceOnEdgeLineOutside;
+    childEdgesSeenFromOutside += o.childEdgesSeenFromOutside;
     return *this;
   }
 };

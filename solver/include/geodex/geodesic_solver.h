@@ -121,6 +121,13 @@ class GeodesicSolver {
                              int depth, Index from);
   /// Zero-area faces stacked on one point hand it on at most this many times.
   static constexpr int kMaxVertexOnEdgeDepth = 4;
+  /// GEODEX_FUZZING_BUILD_MODE (the `fuzz` preset, ClusterFuzzLite) caps a solve at this many
+  /// propagated windows: 20 × (faces + 1)², the exact algorithm's quadratic worst case with a wide
+  /// margin (a 64-face fuzz mesh propagates a few thousand; the cap is 84,500).
+  std::uint64_t fuzzingWorkLimit() const {
+    const std::uint64_t f = mesh_.numFaces() + 1;
+    return 20 * f * f;
+  }
   void propagate(Index edge, const Interval& w);
   void finish(const SolveOptions& options, double radius);
   double targetsMaxDistance(std::span<const ResolvedPoint> targets) const;
