@@ -143,6 +143,20 @@ TEST(InvariantChecker, AGapBelowTheFarNeighboursEpsilonIsSewnFromTheNearSide) {
   EXPECT_EQ(violatedBy(u), "");
 }
 
+TEST(InvariantChecker, AnOverlapHandedToTheLongerSideFails) {
+  // A D2 overlap of 1e-11 between the old interval (shorter there) and the incoming one, handed
+  // to the incoming one: no uniform sample falls inside it, the samples between consecutive
+  // endpoints do (the issue-5 breakage experiment found the gap in the sampling).
+  Update u;
+  const double m = 4.1;
+  u.before = {make(0.0, m, Vec2(2, 1))};
+  u.incoming = make(m - 1e-11, kL, Vec2(8, 1), 5.0);
+  u.after = {make(0.0, m - 1e-11, Vec2(2, 1)), make(m - 1e-11, kL, Vec2(8, 1), 5.0)};
+  EXPECT_EQ(violatedBy(u), "pointwise-min");
+  u.after = {make(0.0, m, Vec2(2, 1)), make(m, kL, Vec2(8, 1), 5.0)};
+  EXPECT_EQ(violatedBy(u), "");
+}
+
 TEST(InvariantChecker, EndOfRunCoverageAndVertexAgreementFail) {
   const Mesh mesh(gridMesh(4, 4, 1.0, 1.0));
   GeodesicSolver solver(mesh);

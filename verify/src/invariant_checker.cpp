@@ -159,9 +159,15 @@ void InvariantChecker::onEdgeUpdate(const EdgeUpdateEvent& e) {
   std::vector<double> xs;
   const int uniform = 32;
   for (int k = 0; k <= uniform; ++k) xs.push_back(e.edgeLength * k / uniform);
-  for (const Interval& w : e.after) xs.push_back(0.5 * (w.b0 + w.b1));
-  for (const Interval& w : e.before) xs.push_back(0.5 * (w.b0 + w.b1));
-  xs.push_back(0.5 * (e.incoming.b0 + e.incoming.b1));
+  // Inside every piece between consecutive endpoints of the three lists: a D2 overlap or a D1
+  // sliver is far shorter than the uniform spacing, and which function wins there is what
+  // steps 1–4 decide (an overlap handed to the longer side went unseen otherwise).
+  std::vector<double> ends{e.incoming.b0, e.incoming.b1};
+  for (const Interval& w : e.before) ends.insert(ends.end(), {w.b0, w.b1});
+  for (const Interval& w : e.after) ends.insert(ends.end(), {w.b0, w.b1});
+  std::sort(ends.begin(), ends.end());
+  for (std::size_t i = 0; i + 1 < ends.size(); ++i)
+    if (ends[i + 1] > ends[i]) xs.push_back(0.5 * (ends[i] + ends[i + 1]));
   double worst = 0.0;
   std::string where;
   // Each function counts where it covers x up to the slack step 4 may sew (ε): a sewn end is
