@@ -889,13 +889,19 @@ Verdict checkPredicates(const PredicateCase& c) {
   }
   constexpr int kSamples = 16;
   // Where the wedge's image on e1 ∪ e2 is shorter than ε (a far, grazing source seen through a
-  // tiny window), its children are below D1's ε or empty after rounding: nothing to cover.
+  // tiny window), its children are below D1's ε or empty after rounding: nothing to cover. The ε
+  // is the children's own (intervalLengthScale: the distance of the source when that is larger
+  // than the face): a window 1.5e-9 wide seen from 3.5e7 away has ray directions that differ by
+  // less than one ulp of the source's coordinates, and its image on e2, 1e-9 long against an ε
+  // of 3.5e-4, rounds to nothing (corpus/fuzz_predicates/regress/coverage-image-below-the-far-
+  // source-epsilon).
   Vec2 lo(INFINITY, INFINITY), hi(-INFINITY, -INFINITY);
   for (int i = 0; i <= kSamples; ++i) {
     const Exit x = exitOf(s, Vec2(w.b0 + (w.b1 - w.b0) * i / kSamples, 0.0), v0, v1, v2);
     if (x.edge != 0) lo = lo.cwiseMin(x.point), hi = hi.cwiseMax(x.point);
   }
-  if ((hi - lo).norm() <= tol::kTinyIntervalRel * scale) return v.summary += " (image below epsilon)", v;
+  const double imageTiny = tol::kTinyIntervalRel * std::max(scale, std::abs(s.x()) + std::abs(s.y()));
+  if ((hi - lo).norm() <= imageTiny) return v.summary += " (image below epsilon)", v;
   for (int i = 0; i <= kSamples; ++i) {
     const Vec2 p(w.b0 + (w.b1 - w.b0) * i / kSamples, 0.0);
     const Exit x = exitOf(s, p, v0, v1, v2);
