@@ -139,7 +139,7 @@ void keepShorter(const Interval& in, const Interval& old, double edgeLength,
     for (int r = 0; r < numRoots; ++r) {
       if (roots[r] <= a || roots[r] >= b) continue;
       const double fr = in.distanceAt(roots[r]), gr = old.distanceAt(roots[r]);
-      if (std::abs(fr - gr) <= tol::kContinuityRel * (gr + edgeLength)) x = roots[r];
+      if (std::abs(fr - gr) <= tol::kEq1RootRel * (gr + edgeLength)) x = roots[r];
     }
     if (x < 0.0) {  // no accurate root between two samples with different winners
       double l = a, h = b;

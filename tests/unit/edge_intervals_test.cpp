@@ -212,6 +212,43 @@ TEST(Algorithm2, AnEq1BreakpointAtARemovedSliverIsNoLongerABreakpoint) {
   }
 }
 
+TEST(Algorithm2, AnEq1RootLeavesRoomForStep5ToMergeItsNeighbour) {
+  // Regression (corpus/fuzz_edge_update/regress/continuous-at-eq1-root-accepted-then-neighbour-
+  // merged): on a 2^21-long edge, sources on the edge's line 2.1e-5 apart (the same source for
+  // step 5: kSameSourceRel × L = 2.1e-5) and an incoming source at 4608. Eq. 1's root between
+  // the incoming one and the source at 0 was off by 1.05e-4, which kContinuityRel × L = 2.1e-4
+  // accepted; step 5 then merged that neighbour with the source at 2.1e-5, and the distances at
+  // the breakpoint differed by 2.3e-4 (over kContinuityRel). Roots are now taken only within
+  // kEq1RootRel, which leaves step 5 its margin, else bisected (D4).
+  const double L = 2097152.0001664613;
+  EdgeIntervals list;
+  list.assign({make(2.0971520001664612e-05, 2048.0000419430398, Vec2(4.1943040003329223e-05, 0), 0),
+               make(2048.0000419430398, 2051.0000838860797, Vec2(2.0971520001664612e-05, 0), 0),
+               make(2051.0001258291195, 2221.0002306867195, Vec2(2.0971520001664612e-05, 0), 0),
+               make(2221.0002306867195, 2223.0002936012797, Vec2(0, 0), 0),
+               make(2223.0002936012797, 2077360.0002936013, Vec2(0, 0), 0),
+               make(2077360.0002936013, 2077872.0006081741, Vec2(0, 0), 0),
+               make(2077872.0006081741, L, Vec2(0, 2), 13.000859832320069)});
+  EdgeUpdateReport report;
+  std::vector<Interval> scratch;
+  const Interval in = make(0.0, L, Vec2(4608, 0), 0.00020971520001664612);
+  list.insert(in, L, report, scratch);
+  const auto after = list.intervals();
+  int checked = 0;
+  for (double x : report.eq1Breakpoints) {
+    for (std::size_t i = 0; i + 1 < after.size(); ++i) {
+      if (after[i].b1 != x || after[i + 1].b0 != x) continue;
+      const double a = after[i].distanceAt(x), b = after[i + 1].distanceAt(x);
+      EXPECT_LE(std::abs(a - b), tol::kContinuityRel * (std::max(a, b) + L)) << "at x = " << x;
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 0);
+  // Where the incoming function meets the one from 0: x = (4608 + σ) / 2.
+  const double meet = 0.5 * (4608 + in.sigma);
+  EXPECT_NEAR(list.distanceAt(meet), meet, tol::kContinuityRel * (meet + L));
+}
+
 TEST(Algorithm2, AFarPseudoSourceDoesNotWidenWhatStep4Sews) {
   // Regression (corpus/fuzz_edge_update/regress/pointwise-min-shadow-width-counted-sigma): step 4
   // used to sew up to kFlatVertexAngle × the whole distance, σ included: with σ = 3.2e12 that is

@@ -644,6 +644,13 @@ std::optional<FuzzCase> decode(FuzzTarget t, std::span<const std::uint8_t> bytes
       if (!(c.edgeLength > 0.0) || !(c.incoming.b0 >= 0.0 && c.incoming.b1 <= c.edgeLength &&
                                      c.incoming.b0 < c.incoming.b1))
         return std::nullopt;
+      // Nor does an incoming interval no propagation makes: a negative or non-finite σ, a source
+      // off the unfolded side (y < 0) or not finite (regress/*-text-reproducer-with-an-invalid-
+      // incoming-interval-was-replayed).
+      const Interval& in = c.incoming;
+      if (!(std::isfinite(in.sigma) && in.sigma >= 0.0 && std::isfinite(in.source.x()) &&
+            std::isfinite(in.source.y()) && in.source.y() >= 0.0))
+        return std::nullopt;
       // As for the binary form: Algorithm 2 starts from a list step 6 accepts; a list it rejects
       // (an interval past the edge's end, two overlapping) tests nothing.
       std::string why;

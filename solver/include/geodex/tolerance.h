@@ -79,6 +79,14 @@ inline constexpr double kShadowSewRel = 1e-9;
 /// difference function.
 inline constexpr double kContinuityRel = 1e-10;
 
+/// Eq. 1: a root of the quadratic is taken as the breakpoint when the two distances agree there
+/// to this × (distance + edge length); otherwise the change is located by bisection (D4). Below
+/// kContinuityRel by what step 5 may still change either function by when it merges it with a
+/// near-equal source (kSameSourceRel for the source, kSameSourceRel for σ): a root accepted at
+/// the edge of kContinuityRel failed the continuity check once its neighbour was merged
+/// (corpus/fuzz_edge_update/regress/continuous-at-eq1-root-accepted-then-neighbour-merged).
+inline constexpr double kEq1RootRel = kContinuityRel - 2.0 * kSameSourceRel;
+
 /// A new interval replaces an old one only where it is shorter by more than this × the distance.
 /// Without it, the same geodesic reached along two unfoldings (equal up to rounding) would keep
 /// replacing itself, fragmenting edges and re-propagating for nothing. Losing at most this much
