@@ -122,6 +122,27 @@ LocalPropagation propagateLocal(const LocalWindow& w) {
   const auto b0OnE1 = [&] { return b0IsV0 ? 0.0 : pred::rayHitsSegment(s, b0, v0, v1); };
   const auto b1OnE2 = [&] { return b1IsV2 ? 1.0 : pred::rayHitsSegment(s, b1, v1, v2); };
 
+  // (1b) v1 collinear with a boundary ray but *behind* it: between s and the window, not beyond
+  //     it. "Collinear" is an angle, and a needle seen end-on from far away is collinear with
+  //     everything; but rays that have passed the window head away from v1, so none of G2–G5
+  //     applies: the whole wedge leaves through the edge on its side of travel (e1 heading
+  //     towards v0, e2 towards v2), as in (4)/(5). G4 handed the needle's e1 whole to a source
+  //     beyond its apex, and the apex came out 64 short of its distance 1.36e7
+  //     (corpus/fuzz_propagation/regress/two-face-distance-needle-apex-between-far-source-and-window).
+  const Side sideB0 = pred::sideOfRay(s, b0, v1);
+  const Side sideB1 = pred::sideOfRay(s, b1, v1);
+  if ((sideB0 == Side::Collinear && (v1 - b0).dot(b0 - s) < 0.0) ||
+      (sideB1 == Side::Collinear && (v1 - b1).dot(b1 - s) < 0.0)) {
+    if (b1.x() - s.x() < 0.0) {  // travelling towards v0
+      LocalPropagation r{Fig6Branch::RightOfWedge};
+      addChild(r, 1, b0OnE1(), pred::rayHitsSegment(s, b1, v0, v1));
+      return r;
+    }
+    LocalPropagation r{Fig6Branch::LeftOfWedge};
+    addChild(r, 2, pred::rayHitsSegment(s, b0, v1, v2), b1OnE2());
+    return r;
+  }
+
   // (2) s, b0, v1 collinear: the left ray hits v1, so the wedge passes right of v1 onto e2 (G2)
   //     — and when b0 = v0 too, the ray runs along e1 and e1 gets the whole edge (G4).
   //     "Collinear" is up to kCollinearSin: the ray may really pass a hair left of v1 and cross e1
@@ -131,7 +152,6 @@ LocalPropagation propagateLocal(const LocalWindow& w) {
   //     So e1 also gets what the ray would cross if it passed left of v1: from there to v1. It is
   //     all within kCollinearSin of the ray, where any path's length differs from the straight
   //     one's by far less than the tolerances (a bend by an angle α changes a length by ~α²/2).
-  const Side sideB0 = pred::sideOfRay(s, b0, v1);
   if (sideB0 == Side::Collinear) {
     LocalPropagation r{b0IsV0 ? Fig6Branch::G4 : Fig6Branch::G2};
     addChild(r, 2, 0.0, b1OnE2());
@@ -144,7 +164,6 @@ LocalPropagation propagateLocal(const LocalWindow& w) {
   }
   // (3) s, b1, v1 collinear: the mirror image (G3, and G5 when b1 = v2; e2 gets, from v1, what
   //     the ray through b1 would cross if it passed a hair right of v1).
-  const Side sideB1 = pred::sideOfRay(s, b1, v1);
   if (sideB1 == Side::Collinear) {
     LocalPropagation r{b1IsV2 ? Fig6Branch::G5 : Fig6Branch::G3};
     addChild(r, 1, b0OnE1(), 1.0);
