@@ -57,6 +57,8 @@ void setRange(Interval& w, double b0, double b1) {
 // one is propagated again whole; its repeated children tie with the ones it made before and
 // Algorithm 2 keeps those (same pseudo-source).
 void grewUnpropagated(Interval& w) {
+  if (w.regrown >= tol::kMaxRegrowths) return;
+  ++w.regrown;
   w.markPending();
   markChanged(w);
 }

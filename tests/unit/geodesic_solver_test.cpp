@@ -497,6 +497,27 @@ TEST(SolverRegression, ANeedleApexBetweenAFarCollinearSourceAndTheWindowIsNotG4)
   EXPECT_NEAR(d[2], exact, 1e-9 * exact);
 }
 
+TEST(SolverRegression, TwoEdgesNoLongerRegrowEachOtherForever) {
+  // tests/data/regression/two-edges-regrow-each-other.off (corpus/fuzz_solver/regress/internal-
+  // check-two-edges-regrow-each-other-forever): on a planar 38-face mesh, each update of edge
+  // 31–39 left a 2e-11 D1 sliver of the incoming interval that its propagated neighbour absorbed
+  // and was propagated again for, which sent the same children to edge 30–31, where the same
+  // happened the other way: the release solve ran for minutes. Regrowths are now capped
+  // (tol::kMaxRegrowths); the solve takes a few hundred updates and its distances keep the bounds.
+  const Mesh mesh = loadMesh(std::string(GEODEX_SOURCE_DIR) + "/tests/data/regression/two-edges-regrow-each-other.off");
+  const std::vector<SurfacePoint> sources{parseSurfacePoint("f:0,0,0,1"), SurfacePoint::atVertex(5),
+                                          SurfacePoint::atVertex(5)};
+  GeodesicSolver solver(mesh);
+  verify::InvariantChecker checker(verify::CheckLevel::Full, /*throwOnViolation=*/false);
+  solver.setObserver(&checker);
+  solver.solve(sources);
+  if (const auto* v = checker.firstViolation()) ADD_FAILURE() << v->what();
+  EXPECT_LT(solver.stats().intervalsPropagated, 10u * mesh.numFaces());
+  const auto d = solver.vertexDistances();
+  const auto upper = verify::edgeGraphDijkstra(mesh, sources);
+  EXPECT_TRUE(verify::checkUpperBound(d, upper, 1e-9).ok());
+}
+
 TEST(SolverRegression, AnEdgeSourceAHairFromAVertexKeepsEveryEdgeThereCovered) {
   // A 2×2 grid of unit cells (planar, convex: distances are Euclidean) and a source on the
   // diagonal 4–8 at 6.4e-10 of its length from vertex 4, just outside the snapping band. Seen

@@ -497,7 +497,7 @@ std::string CheckReport::summary() const {
 }
 
 CheckReport checkEuclideanLowerBound(std::span<const double> d, std::span<const double> euclid,
-                                     double relTol) {
+                                     double relTol, double absTol) {
   requireSameSize(d.size(), euclid.size(), "checkEuclideanLowerBound");
   const double scale = largestFinite(euclid);
   ReportBuilder report;
@@ -511,7 +511,7 @@ CheckReport checkEuclideanLowerBound(std::span<const double> d, std::span<const 
       continue;
     }
     const double normalizer = euclid[i] + scale;
-    report.compare(euclid[i] - d[i], relTol * normalizer, normalizer, [&] {
+    report.compare(euclid[i] - d[i], relTol * normalizer + absTol, normalizer, [&] {
       return "vertex " + std::to_string(i) + ": distance " + formatDouble(d[i]) +
              " below the Euclidean lower bound " + formatDouble(euclid[i]);
     });
@@ -520,7 +520,7 @@ CheckReport checkEuclideanLowerBound(std::span<const double> d, std::span<const 
 }
 
 CheckReport checkUpperBound(std::span<const double> d, std::span<const double> upper,
-                            double relTol) {
+                            double relTol, double absTol) {
   requireSameSize(d.size(), upper.size(), "checkUpperBound");
   const double scale = largestFinite(upper);
   ReportBuilder report;
@@ -536,7 +536,7 @@ CheckReport checkUpperBound(std::span<const double> d, std::span<const double> u
       report.pass();  // both unreachable
     } else {
       const double normalizer = std::abs(upper[i]) + scale;
-      report.compare(d[i] - upper[i], relTol * normalizer, normalizer, [&] {
+      report.compare(d[i] - upper[i], relTol * normalizer + absTol, normalizer, [&] {
         return vertex + ": distance " + formatDouble(d[i]) + " above the upper bound " +
                formatDouble(upper[i]);
       });
@@ -595,7 +595,7 @@ CheckReport checkSymmetry(double dab, double dba, double relTol) {
 }
 
 CheckReport checkAgreement(std::span<const double> d, std::span<const double> reference,
-                           double relTol) {
+                           double relTol, double absTol) {
   requireSameSize(d.size(), reference.size(), "checkAgreement");
   const double scale = largestFinite(reference);
   ReportBuilder report;
@@ -611,7 +611,7 @@ CheckReport checkAgreement(std::span<const double> d, std::span<const double> re
       report.pass();
     } else {
       const double normalizer = std::abs(reference[i]) + scale;
-      report.compare(std::abs(d[i] - reference[i]), relTol * normalizer, normalizer, [&] {
+      report.compare(std::abs(d[i] - reference[i]), relTol * normalizer + absTol, normalizer, [&] {
         return vertex + ": distance " + formatDouble(d[i]) + " differs from the reference " +
                formatDouble(reference[i]);
       });

@@ -33,6 +33,10 @@ struct Interval {
   /// must give it a fresh queue entry (and then clears the bit). Trimming an interval elsewhere
   /// keeps its queue entry: its key, the smallest distance, is where it was.
   std::uint8_t flags = kPending;
+  /// How often Algorithm 2 made this interval pending again after its propagation because it
+  /// grew over a part nothing propagated (a D1 sliver still pending, half a sewn D3 gap); capped
+  /// at tol::kMaxRegrowths (see grewUnpropagated in edge_intervals.cpp).
+  std::uint8_t regrown = 0;
   static constexpr std::uint8_t kPending = 1;
   static constexpr std::uint8_t kChanged = 2;
 

@@ -87,6 +87,14 @@ inline constexpr double kContinuityRel = 1e-10;
 /// (corpus/fuzz_edge_update/regress/continuous-at-eq1-root-accepted-then-neighbour-merged).
 inline constexpr double kEq1RootRel = kContinuityRel - 2.0 * kSameSourceRel;
 
+/// Algorithm 2 re-propagates an interval that grew over an unpropagated sliver (D1) or half a
+/// sewn gap (D3) at most this many times. Each regrowth is below ε, and so are the children it
+/// adds; without a cap two propagated intervals on neighbouring edges can hand each other such a
+/// sliver forever (a 38-face planar mesh ran for minutes: corpus/fuzz_solver/regress/
+/// internal-check-two-edges-regrow-each-other-forever). Past the cap the sliver is absorbed
+/// without a second propagation, and the sub-ε gap it leaves further on is step 4's.
+inline constexpr int kMaxRegrowths = 4;
+
 /// A new interval replaces an old one only where it is shorter by more than this × the distance.
 /// Without it, the same geodesic reached along two unfoldings (equal up to rounding) would keep
 /// replacing itself, fragmenting edges and re-propagating for nothing. Losing at most this much

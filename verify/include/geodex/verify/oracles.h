@@ -158,16 +158,18 @@ struct CheckReport {
 // (B ≈ 0) would be held to an impossible absolute accuracy; relative to L alone, far values
 // would get a looser check than the solver promises. NaN always fails.
 
+/// Each bound below allows relTol × (value + L) + absTol, absTol being what the reference owes
+/// to points it placed in 3-D (a source point's position: tol::kPositionRoundingRel).
 /// d ≥ euclid − tolerance wherever d is finite (an unreachable vertex satisfies a lower bound).
 /// L = the largest finite value of euclid. Negative d fails.
 CheckReport checkEuclideanLowerBound(std::span<const double> d, std::span<const double> euclid,
-                                     double relTol);
+                                     double relTol, double absTol = 0.0);
 
 /// d ≤ upper + tolerance, e.g. upper = edgeGraphDijkstra(...). A vertex finite in one field and
 /// infinite in the other fails (the edge graph reaches exactly what the surface reaches).
 /// L = the largest finite value of upper.
 CheckReport checkUpperBound(std::span<const double> d, std::span<const double> upper,
-                            double relTol);
+                            double relTol, double absTol = 0.0);
 
 /// |d(u) − d(v)| ≤ |uv| + tolerance on every mesh edge uv with both ends finite (geodesic
 /// distance is 1-Lipschitz along the surface). Edges with one infinite end are skipped (a solve
@@ -181,6 +183,6 @@ CheckReport checkSymmetry(double dab, double dba, double relTol);
 /// |d − reference| ≤ tolerance entry by entry (e.g. against the planar-domain or the CGAL
 /// oracle); +inf must match +inf. L = the largest finite value of reference.
 CheckReport checkAgreement(std::span<const double> d, std::span<const double> reference,
-                           double relTol);
+                           double relTol, double absTol = 0.0);
 
 }  // namespace geodex::verify
