@@ -53,7 +53,7 @@ void GeodesicSolver::reset() {
   edges_.assign(mesh_.numEdges(), EdgeIntervals(&pool_));
   vertexDistance_.assign(mesh_.numVertices(), kInfinity);
   sources_.clear();
-  queue_.reset(queueBucketWidth_);
+  queue_.reset(queueBucketWidth_, mesh_.numEdges());  // a ring of at most one bucket per edge
   counters_ = {};
   stats_ = {};
 }
