@@ -291,7 +291,7 @@ void GeodesicSolver::propagate(Index edge, const Interval& w) {
     if (const auto kind = degeneracyOf(result.branch)) ++counters_[*kind];
     if (result.branch == Fig6Branch::ZeroAreaFace) ++counters_.zeroAreaFaces;
     if (result.branch == Fig6Branch::G1Outside) ++counters_.sourceOnEdgeLineOutside;
-    if (observer_ != nullptr) observer_->onPropagation({f, edge, w, local, result});
+    if (hooked()) observer_->onPropagation({f, edge, w, local, result});
 
     for (int c = 0; c < result.numChildren; ++c) {
       const LocalChild& child = result.children[c];
@@ -388,7 +388,7 @@ void GeodesicSolver::addInterval(Index edge, const Interval& w, const Fig6Branch
   ++stats_.intervalsCreated;
   const double length = mesh_.edge(edge).length;
   EdgeIntervals& list = edges_[edge];
-  if (observer_ != nullptr) before_.assign(list.intervals().begin(), list.intervals().end());
+  if (hooked()) before_.assign(list.intervals().begin(), list.intervals().end());
   list.insert(w, length, report_, scratch_);
   for (DegeneracyKind k :
        {DegeneracyKind::D1, DegeneracyKind::D2, DegeneracyKind::D3, DegeneracyKind::D4})
@@ -413,7 +413,7 @@ void GeodesicSolver::addInterval(Index edge, const Interval& w, const Fig6Branch
     if (report_.last == intervals.size() && intervals.back().b1 == length)
       updateVertex(E.vertex[1], intervals.back().distanceAt(length));
   }
-  if (observer_ != nullptr) {
+  if (hooked()) {
     observer_->onEdgeUpdate({edge, length, before_, w, list.intervals(), report_, branch});
   }
 }
@@ -443,7 +443,7 @@ void GeodesicSolver::finish(const SolveOptions& options, double radius) {
   }
   stats_.intervalsAtEnd = total;
   stats_.maxIntervalsPerEdge = most;
-  if (observer_ != nullptr) observer_->onFinish(*this);
+  if (hooked()) observer_->onFinish(*this);
 }
 
 // ===  Queries ====================================================================================

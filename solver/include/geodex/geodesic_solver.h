@@ -130,6 +130,13 @@ class GeodesicSolver {
   }
   void propagate(Index edge, const Interval& w);
   void finish(const SolveOptions& options, double radius);
+  /// Whether to build and send observer events. GEODEX_NO_OBSERVER_HOOKS compiles the hooks out
+  /// (only for bench/hooks_overhead, which measures what the null check costs a release solve).
+#ifdef GEODEX_NO_OBSERVER_HOOKS
+  static constexpr bool hooked() { return false; }
+#else
+  bool hooked() const { return observer_ != nullptr; }
+#endif
   double targetsMaxDistance(std::span<const ResolvedPoint> targets) const;
   double resolvedDistance(const ResolvedPoint& p) const;
 
