@@ -151,17 +151,6 @@ inline constexpr double kRoundingRel = 1e-14;
 /// to 6e-11 only (corpus/fuzz_propagation/regress/two-face-distance-point-rounded-far-from-origin).
 inline constexpr double kPositionRoundingRel = 4.0 * 2.220446049250313e-16;
 
-/// How well a vertex distance can agree with what an incident edge gives there (the end-of-run
-/// step-6 invariant 'vertex-agreement', relative to the distance plus the edge's length, as the
-/// Eq. 1 continuity): kContinuityRel, plus the rounding of positions along the *longest* edge at
-/// the vertex. D(v) is the smallest value any incident edge gives at v, and along an edge of
-/// length L positions are known to ulp(L) ≈ 1e-16 × L only (an unfolded source near the far end
-/// of a 1e6-long edge is 1.2e-10 off): a unit edge beside a 1e6-long one cannot agree with it to
-/// kContinuityRel × (d + 1). Measured: 1.3e-10 on a planar mesh with 1e6-long thin triangles
-/// (tests/property/regressions_test.cpp, case 3), kRoundingRel × 1e6 = 1e-8 covers it.
-inline double vertexAgreementTolerance(double distance, double edgeLength, double longestIncidentEdge) {
-  return kContinuityRel * (distance + edgeLength) + kRoundingRel * longestIncidentEdge;
-}
 
 /// How far an edge's distance function may stray from the exact pointwise minimum of the list
 /// before an update and the incoming interval (Algorithm 2 step 6, full tier), relative to
@@ -170,6 +159,24 @@ inline double vertexAgreementTolerance(double distance, double edgeLength, doubl
 /// (kTinyIntervalRel) absorbed by a neighbour on either side, and a tie not taken (kTieRel). (The
 /// shadows closed at the end of a solve, kShadowSewRel, come after the last update it checks.)
 inline constexpr double kPointwiseMinRel = kContinuityRel + 2.0 * kTinyIntervalRel + kTieRel;
+
+/// How well a vertex distance can agree with what an incident edge gives there (the end-of-run
+/// step-6 invariant 'vertex-agreement', relative to the distance plus the edge's length, as the
+/// Eq. 1 continuity): kContinuityRel, plus what D(v) itself may carry from the *longest* edge at
+/// the vertex, since D(v) is the smallest value any incident edge gives at v:
+///  - the rounding of positions along it: along an edge of length L positions are known to
+///    ulp(L) ≈ 1e-16 × L only (an unfolded source near the far end of a 1e6-long edge is 1.2e-10
+///    off). Measured: 1.3e-10 on a planar mesh with 1e6-long thin triangles
+///    (tests/property/regressions_test.cpp, case 3); kRoundingRel × 1e6 = 1e-8 covers it.
+///  - its own contract: a long edge holds its distance function to kPointwiseMinRel × (d + L) of
+///    the exact minimum (its D1–D3 ε is kTinyIntervalRel × L), so D(v) taken from a 241522-long
+///    edge sat 1.3e-7 below what the three short edges at v agreed on
+///    (tests/data/regression/refined-far-source-patch-vertex-agreement.off, found by
+///    scripts/properties-long.sh): within that edge's contract and the 1e-9 × diagonal target.
+inline double vertexAgreementTolerance(double distance, double edgeLength, double longestIncidentEdge) {
+  return kContinuityRel * (distance + edgeLength) +
+         (kRoundingRel + kPointwiseMinRel) * longestIncidentEdge;
+}
 
 // ===  Path tracing (path.cpp) ===================================================================
 
