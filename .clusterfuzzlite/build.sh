@@ -3,6 +3,8 @@
 # the fixed-bug reproducers in regress/) as $OUT/<target>_seed_corpus.zip, as ClusterFuzzLite and
 # OSS-Fuzz expect. Runs inside their image ($CXX, $CXXFLAGS, $LIB_FUZZING_ENGINE set there) or
 # here: `OUT=/tmp/out .clusterfuzzlite/build.sh` with clang++ and libFuzzer defaults.
+# (The shebang's -eu is lost when the script is run as `bash build.sh`, as ClusterFuzzLite does.)
+set -euo pipefail
 SRC_DIR=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 : "${OUT:?set OUT to the output directory}"
 : "${CXX:=clang++}"
@@ -22,6 +24,12 @@ cmake --build "$BUILD" --parallel "${NPROC:-2}" --target "${TARGETS[@]}"
 mkdir -p "$OUT"
 for target in "${TARGETS[@]}"; do
   cp "$BUILD/bin/$target" "$OUT/"
+  # A dictionary where the input is text (fuzz/<target>.dict), and libFuzzer options for all:
+  # the input cap the target itself enforces.
+  if [[ -f $SRC_DIR/fuzz/$target.dict ]]; then cp "$SRC_DIR/fuzz/$target.dict" "$OUT/"; fi
+  max_len=4096
+  [[ $target == fuzz_mesh_io ]] && max_len=65536
+  printf '[libfuzzer]\nmax_len = %s\n' "$max_len" > "$OUT/$target.options"
   inputs=()
   for f in "$SRC_DIR"/corpus/"$target"/seed/* "$SRC_DIR"/corpus/"$target"/regress/*; do
     [[ -f $f ]] || continue

@@ -46,13 +46,15 @@ for target in "${targets[@]}"; do
   done
   max_len=4096
   [[ $target == fuzz_mesh_io ]] && max_len=65536
+  dict=()
+  [[ -f fuzz/$target.dict ]] && dict=(-dict="fuzz/$target.dict")
 
   echo
   echo "=== $target: ${budget} s, 2 forked workers"
   # -fork with -ignore_crashes keeps fuzzing past a finding (the open bugs of regress/open-* are
   # found again within seconds; -jobs workers would stop at the first one).
   "$bin" -fork=2 -ignore_crashes=1 -max_total_time="$budget" -timeout=10 -rss_limit_mb=2048 \
-    -max_len="$max_len" -artifact_prefix="$work/artifacts/" -print_final_stats=1 \
+    "${dict[@]}" -max_len="$max_len" -artifact_prefix="$work/artifacts/" -print_final_stats=1 \
     "$work/new" "$work/corpus" >"$work/fuzz.log" 2>&1 || true
 
   # Final stats: the last progress line of the fork-mode parent,

@@ -13,7 +13,6 @@ PACKAGES=(
   libcgal-dev libgmp-dev libmpfr-dev  # differential oracle (CGAL Surface_mesh_shortest_path)
   libcgal-demo                        # ~150 real meshes (data.tar.gz) for tests, demo, benchmarks
   libpng-dev libstb-dev               # images (geodex render)
-  libbenchmark-dev                    # bench/
   python3 git
 )
 

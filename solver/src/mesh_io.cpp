@@ -30,6 +30,7 @@
 
 #include "geodex/error.h"
 #include "geodex/tolerance.h"
+#include "from_chars_double.h"
 
 namespace geodex {
 
@@ -158,7 +159,7 @@ bool parseDouble(std::string_view token, double& out) {
   const char* end = token.data() + token.size();
   const char* begin = skipPlus(token.data(), end);
   if (begin == end) return false;
-  const auto [stop, error] = std::from_chars(begin, end, out);
+  const auto [stop, error] = detail::fromCharsDouble(begin, end, out);
   if (stop != end) return false;
   if (error == std::errc()) return true;
   if (error != std::errc::result_out_of_range) return false;

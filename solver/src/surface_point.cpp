@@ -8,6 +8,7 @@
 #include "geodex/check.h"
 #include "geodex/error.h"
 #include "geodex/tolerance.h"
+#include "from_chars_double.h"
 
 namespace geodex {
 namespace {
@@ -41,7 +42,7 @@ Index parseIndex(const std::string& spec, const std::string& token) {
 double parseNumber(const std::string& spec, const std::string& token) {
   double value = 0.0;
   const char* end = token.data() + token.size();
-  const auto [ptr, ec] = std::from_chars(token.data(), end, value);
+  const auto [ptr, ec] = detail::fromCharsDouble(token.data(), end, value);
   if (token.empty() || ec != std::errc() || ptr != end || !std::isfinite(value))
     badSpec(spec, "'" + token + "' is not a finite number");
   return value;
