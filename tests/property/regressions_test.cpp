@@ -348,5 +348,22 @@ TEST(SolverRegression, RefinedFarSourcePatchEdgesAgreeAtTheSplitVertex) {
   expectEdgesAgreeAtVertex(solver, 37);
 }
 
+// Open (found by the second 30-minute scripts/properties-long.sh run on 2026-11-22, pass 1, in
+// Metamorphic.CoplanarRefinementLeavesDistancesUnchanged): a far-source patch (the far vertex
+// 1.2e5 away) with an edge split, and a source on the long edge 1-16, 89,000 from the patch
+// (tests/data/regression/far-source-edge-end-left-to-a-pseudo-source.off). Edge 0-5's window
+// from the source ends 4.5e-6 short of vertex 5 (more than the 8.9e-7 step 4 sews there), and a
+// window from vertex 0 along the edge (G1) covers the rest: edge 0-5 gives 89235.078 at vertex 5,
+// 0.41 above D(5) = 89234.672, which CGAL and every bound confirm. Vertex distances are right;
+// edge-point queries within 4.5e-6 of vertex 5 are 0.41 too long (3.4e-6 × the diagonal). On
+// GEODEX_KNOWN_BUGS: it runs as an expected failure until fixed.
+TEST(SolverRegression, FarSourceWindowStopsShortOfAConvexVertex) {
+  const Mesh mesh = loadMesh(std::string(GEODEX_SOURCE_DIR) +
+                             "/tests/data/regression/far-source-edge-end-left-to-a-pseudo-source.off");
+  GeodesicSolver solver(mesh);
+  EXPECT_EQ(solveAndCheck(parseSurfacePoint("e:1,16,0.73036696604202955"), solver), "");
+  expectEdgesAgreeAtVertex(solver, 5);
+}
+
 }  // namespace
 }  // namespace geodex::proptest
