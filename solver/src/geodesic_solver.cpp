@@ -317,11 +317,12 @@ void GeodesicSolver::propagate(Index edge, const Interval& w) {
       if (!(n.b1 > n.b0)) continue;
       // The source lies on the crossed face's side of the new edge (the rays leave the face
       // through it); rounding can put it a hair across, which is a source on the line. Clearly
-      // across, the rays cannot leave through that edge at all: a needle seen end-on from a far
-      // source is collinear with it within kCollinearSin, and the G5 branch hands its short side
-      // the whole edge although every ray passes the needle's far end. Clamped onto the line,
-      // that source would stand 1.5e-8 from a corner 5.2e6 away from it
+      // across, the rays cannot leave through that edge at all, and the child is dropped (and
+      // counted): clamped onto the line, such a source stood 1.5e-8 from a corner 5.2e6 away
+      // from it when G5 handed a needle seen end-on its short side
       // (corpus/fuzz_propagation/regress/two-face-distance-needle-seen-end-on-from-far-source).
+      // Fig. 6's case (1b) now decides that needle itself; this stays as the safety net for any
+      // other ε-decision that names an edge the wedge cannot reach.
       const double inward = interior > 0 ? h : -h;
       if (!zeroArea && inward < 0.0 &&
           -inward > std::max(tol::kCoincideRel * localScale(local), tol::kCollinearSin * rel.norm())) {
