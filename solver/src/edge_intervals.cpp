@@ -138,10 +138,17 @@ void keepShorter(const Interval& in, const Interval& old, double edgeLength,
     const double a = sample[k - 1], b = sample[k];
     if (numRoots < 0) numRoots = equalDistanceCandidates(in, old, lo, hi, roots);
     double x = -1.0;
+    // f − g is monotone between the two samples, so a real crossing is nearer zero than f − g at
+    // both of them. Where the two functions run parallel within the tolerance (two sources 1e-10
+    // apart, one with σ 1e-10), every point "agrees" to kEq1RootRel and a root far from the
+    // crossing was taken: the incoming interval kept 1.3 of a 2-long edge it loses everywhere by
+    // 2.6e-10 (corpus/fuzz_edge_update/regress/pointwise-min-eq1-root-of-parallel-functions).
+    const double edgeDiff = 0.5 * std::min(std::abs(f[k - 1] - g[k - 1]), std::abs(f[k] - g[k]));
     for (int r = 0; r < numRoots; ++r) {
       if (roots[r] <= a || roots[r] >= b) continue;
       const double fr = in.distanceAt(roots[r]), gr = old.distanceAt(roots[r]);
-      if (std::abs(fr - gr) <= tol::kEq1RootRel * (gr + edgeLength)) x = roots[r];
+      const double diff = std::abs(fr - gr);
+      if (diff <= tol::kEq1RootRel * (gr + edgeLength) && diff <= edgeDiff) x = roots[r];
     }
     if (x < 0.0) {  // no accurate root between two samples with different winners
       double l = a, h = b;

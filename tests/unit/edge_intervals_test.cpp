@@ -249,6 +249,28 @@ TEST(Algorithm2, AnEq1RootLeavesRoomForStep5ToMergeItsNeighbour) {
   EXPECT_NEAR(list.distanceAt(meet), meet, tol::kContinuityRel * (meet + L));
 }
 
+TEST(Algorithm2, AnEq1RootOfParallelFunctionsIsNotTaken) {
+  // Regression (corpus/fuzz_edge_update/regress/pointwise-min-eq1-root-of-parallel-functions,
+  // found by the fuzz smoke of a fresh ./test.sh): two sources 1.3e-10 apart near x = 0.109 on a
+  // 2-long edge, the incoming one with σ = 1.3e-10. Beyond them the two distance functions run
+  // parallel, the incoming one 2.6e-10 longer: within kEq1RootRel of each other everywhere, so a
+  // root of Eq. 1 at x = 1.43 "agreed" and the incoming interval kept [1.2e-10, 1.43]. A root is
+  // now taken only where f − g is nearer zero than at the samples around it.
+  const double L = 1.9999999997875;
+  const Interval old = make(0.0, 1.7500076294345313, Vec2(0.10937500008000001, 1.5999999998299998e-10), 0.0);
+  EdgeIntervals list;
+  list.assign({old});
+  EdgeUpdateReport report;
+  std::vector<Interval> scratch;
+  const Interval in =
+      make(1.1874999998738281e-10, 1.7843856798523436, Vec2(0.10937499995125001, 3.1249999996679667e-11), 1.2874999998632031e-10);
+  list.insert(in, L, report, scratch);
+  for (double x : {0.125, 0.5, 1.0, 1.4, 1.7}) {
+    const double expected = std::min(old.distanceAt(x), in.distanceAt(x));
+    EXPECT_NEAR(list.distanceAt(x), expected, tol::kPointwiseMinRel * (expected + L)) << "at x = " << x;
+  }
+}
+
 TEST(Algorithm2, AFarPseudoSourceDoesNotWidenWhatStep4Sews) {
   // Regression (corpus/fuzz_edge_update/regress/pointwise-min-shadow-width-counted-sigma): step 4
   // used to sew up to kFlatVertexAngle × the whole distance, σ included: with σ = 3.2e12 that is
