@@ -3,7 +3,7 @@
 #   ./test.sh               the release, debug, asan and fuzz presets
 #   ./test.sh debug [...]   the named presets only
 # The fuzz preset builds only the libFuzzer targets and the corpus tools and runs the corpus
-# replay plus a 30 s fuzz smoke per target (labels corpus, fuzz-smoke; scripts/fuzz.sh is the
+# replay plus a fixed-seed fuzz smoke per target (labels corpus, fuzz-smoke; scripts/fuzz.sh is the
 # full fuzzing job).
 # Every preset is run even when an earlier one fails; the exit code is non-zero if any configure,
 # build or test step failed. One summary line per preset at the end, then "N passed, M failed".
