@@ -72,6 +72,15 @@ void expectEdgesAgreeAtVertex(const GeodesicSolver& solver, Index v) {
   }
 }
 
+// A mesh of tests/data/regression solved from `source` with the full-tier checker: no invariant
+// broken, and every edge at vertex v gives D(v) there.
+void expectCheckedSolveAgreesAtVertex(const std::string& file, const std::string& source, Index v) {
+  const Mesh mesh = loadMesh(std::string(GEODEX_SOURCE_DIR) + "/tests/data/regression/" + file);
+  GeodesicSolver solver(mesh);
+  EXPECT_EQ(solveAndCheck(parseSurfacePoint(source), solver), "");
+  expectEdgesAgreeAtVertex(solver, v);
+}
+
 // Case 1: a 2×2 grid whose centre vertex 4 is raised (a convex cone: angle sum 6.03 < 2π, so not a
 // pseudo-source), moved along x, and a source on the diagonal 4→8 at 1% of its length, 0.0145
 // from vertex 4. The windows seeded from an edge or face source are built from the source's
@@ -341,11 +350,7 @@ TEST(Algorithm2Regression, NearIntervalWinningInsideAFarOneIsKept) {
 // not allow for what D(v) carries from the longest edge at v, and now does
 // (tol::vertexAgreementTolerance). The solve must pass every invariant and the edges agree.
 TEST(SolverRegression, RefinedFarSourcePatchEdgesAgreeAtTheSplitVertex) {
-  const Mesh mesh = loadMesh(std::string(GEODEX_SOURCE_DIR) +
-                             "/tests/data/regression/refined-far-source-patch-vertex-agreement.off");
-  GeodesicSolver solver(mesh);
-  EXPECT_EQ(solveAndCheck(parseSurfacePoint("e:19,25,0.5"), solver), "");
-  expectEdgesAgreeAtVertex(solver, 37);
+  expectCheckedSolveAgreesAtVertex("refined-far-source-patch-vertex-agreement.off", "e:19,25,0.5", 37);
 }
 
 // Open (found by the second 30-minute scripts/properties-long.sh run on 2026-11-22, pass 1, in
@@ -358,11 +363,8 @@ TEST(SolverRegression, RefinedFarSourcePatchEdgesAgreeAtTheSplitVertex) {
 // edge-point queries within 4.5e-6 of vertex 5 are 0.41 too long (3.4e-6 × the diagonal). On
 // GEODEX_KNOWN_BUGS: it runs as an expected failure until fixed.
 TEST(SolverRegression, FarSourceWindowStopsShortOfAConvexVertex) {
-  const Mesh mesh = loadMesh(std::string(GEODEX_SOURCE_DIR) +
-                             "/tests/data/regression/far-source-edge-end-left-to-a-pseudo-source.off");
-  GeodesicSolver solver(mesh);
-  EXPECT_EQ(solveAndCheck(parseSurfacePoint("e:1,16,0.73036696604202955"), solver), "");
-  expectEdgesAgreeAtVertex(solver, 5);
+  expectCheckedSolveAgreesAtVertex("far-source-edge-end-left-to-a-pseudo-source.off",
+                                   "e:1,16,0.73036696604202955", 5);
 }
 
 }  // namespace
