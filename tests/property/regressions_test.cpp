@@ -353,15 +353,17 @@ TEST(SolverRegression, RefinedFarSourcePatchEdgesAgreeAtTheSplitVertex) {
   expectCheckedSolveAgreesAtVertex("refined-far-source-patch-vertex-agreement.off", "e:19,25,0.5", 37);
 }
 
-// Open (found by the second 30-minute scripts/properties-long.sh run on 2026-11-22, pass 1, in
+// Found by the second 30-minute scripts/properties-long.sh run on 2026-11-22 (pass 1, in
 // Metamorphic.CoplanarRefinementLeavesDistancesUnchanged): a far-source patch (the far vertex
-// 1.2e5 away) with an edge split, and a source on the long edge 1-16, 89,000 from the patch
-// (tests/data/regression/far-source-edge-end-left-to-a-pseudo-source.off). Edge 0-5's window
-// from the source ends 4.5e-6 short of vertex 5 (more than the 8.9e-7 step 4 sews there), and a
-// window from vertex 0 along the edge (G1) covers the rest: edge 0-5 gives 89235.078 at vertex 5,
-// 0.41 above D(5) = 89234.672, which CGAL and every bound confirm. Vertex distances are right;
-// edge-point queries within 4.5e-6 of vertex 5 are 0.41 too long (3.4e-6 × the diagonal). On
-// GEODEX_KNOWN_BUGS: it runs as an expected failure until fixed.
+// 1.2e5 away) with edge 1-5 split at a flat vertex 17, and a source on the long edge 1-16, 89,000
+// from the patch (tests/data/regression/far-source-edge-end-left-to-a-pseudo-source.off). Seen
+// from the source, vertex 1 (a saddle) shadows a sliver 1.09e-6 wide at the end of edge 0-17,
+// which vertex 1's own window covers. Step 3 took that sliver for D1 against the direct window's
+// ε (1e-11 × its source distance, 1.0864e-6) and merged it into the direct window, whose rays
+// never reach the shadow: vertex 1's fan was lost, edge 0-5's direct window ended 4.5e-6 short of
+// vertex 5 and a window from vertex 0 covered the rest, 0.41 above D(5) = 89234.672 there (CGAL
+// and every bound agree on D(5)). A sliver is now D1 only below its own ε. The solve must pass
+// every invariant and edge 0-5 must agree with D(5).
 TEST(SolverRegression, FarSourceWindowStopsShortOfAConvexVertex) {
   expectCheckedSolveAgreesAtVertex("far-source-edge-end-left-to-a-pseudo-source.off",
                                    "e:1,16,0.73036696604202955", 5);

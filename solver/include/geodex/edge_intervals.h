@@ -59,23 +59,6 @@ inline double tinyLength(const Interval& w, double edgeLength) {
   return tol::kTinyIntervalRel * intervalLengthScale(w, edgeLength);
 }
 
-/// ε for the i-th interval of a sorted list: its ends may have been cast by its neighbours, so
-/// the larger scale of itself and the neighbours it touches counts (a sliver left between a near
-/// window and one from a source 1e5 edge lengths away is only known to ~1e-11 × 1e5 × edge).
-/// A neighbour counts when it touches or is within its own ε of touching (step 4 will sew it).
-inline double tinyLengthInList(std::span<const Interval> list, std::size_t i, double edgeLength) {
-  double tiny = tinyLength(list[i], edgeLength);
-  if (i > 0) {
-    const double t = tinyLength(list[i - 1], edgeLength);
-    if (list[i - 1].b1 >= list[i].b0 - t) tiny = std::max(tiny, t);
-  }
-  if (i + 1 < list.size()) {
-    const double t = tinyLength(list[i + 1], edgeLength);
-    if (list[i + 1].b0 <= list[i].b1 + t) tiny = std::max(tiny, t);
-  }
-  return tiny;
-}
-
 /// The first index i of `list` with !before(list[i]), where `before` holds on a prefix of the list
 /// (a sorted, non-overlapping list: e.g. "ends before x"). The search starts at `guess` and
 /// gallops outwards: it reads a cache line or two when the guess is close, O(log n) lines in any
