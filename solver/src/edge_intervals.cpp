@@ -386,13 +386,16 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
         double tinyHere = m > 0 ? tinyLength(L[0], edgeLength) : 0.0;  // ε of L[r]
         for (std::size_t r = 0; r < m; ++r) {
           const double tinyNext = r + 1 < m ? tinyLength(L[r + 1], edgeLength) : 0.0;
-          // ε of L[r] itself: its ends are as good as its own rays. A coarser neighbour's ε (a far
-          // pseudo-source's) does not make it tiny: such a sliver can be the start of a near
-          // saddle's shadow, which fans out downstream where the far rays never reach. Merged
-          // into a far window 1.09e-6 short of a flat vertex, vertex 1's window lost its fan and
-          // the next edge took a distance 0.41 too long from another vertex
-          // (tests/data/regression/far-source-edge-end-left-to-a-pseudo-source.off).
-          const double tiny = tinyHere;
+          // ε of L[r] itself, or a touching neighbour's ray-end precision when larger: a sliver
+          // within that of a coarser window's end may be its rounding (tol::kRayEndRel). Not the
+          // neighbour's whole ε: a longer sliver can be the start of a near saddle's shadow,
+          // which fans out downstream where the far rays never reach (tinyLengthInList is the
+          // same rule, for the checker).
+          double tiny = tinyHere;
+          if (w > 0 && L[w - 1].b1 >= L[r].b0 - tinyKept)
+            tiny = std::max(tiny, rayEndPrecision(L[w - 1], edgeLength));
+          if (r + 1 < m && L[r + 1].b0 <= L[r].b1 + tinyNext)
+            tiny = std::max(tiny, rayEndPrecision(L[r + 1], edgeLength));
           // An edge shorter than ε has nothing but D1 slivers: the last one left is the edge's
           // distance to the precision its source allows, and step 4 sews it to both ends.
           // Removing it too left the edge uncovered (corpus/fuzz_propagation/regress/

@@ -362,11 +362,24 @@ TEST(SolverRegression, RefinedFarSourcePatchEdgesAgreeAtTheSplitVertex) {
 // ε (1e-11 × its source distance, 1.0864e-6) and merged it into the direct window, whose rays
 // never reach the shadow: vertex 1's fan was lost, edge 0-5's direct window ended 4.5e-6 short of
 // vertex 5 and a window from vertex 0 covered the rest, 0.41 above D(5) = 89234.672 there (CGAL
-// and every bound agree on D(5)). A sliver is now D1 only below its own ε. The solve must pass
-// every invariant and edge 0-5 must agree with D(5).
+// and every bound agree on D(5)). Beside a coarser window, a sliver is now D1 only below that
+// window's ray-end precision (tol::kRayEndRel × its scale, 1.1e-9 here), not below its whole ε.
+// The solve must pass every invariant and edge 0-5 must agree with D(5).
 TEST(SolverRegression, FarSourceWindowStopsShortOfAConvexVertex) {
   expectCheckedSolveAgreesAtVertex("far-source-edge-end-left-to-a-pseudo-source.off",
                                    "e:1,16,0.73036696604202955", 5);
+}
+
+// Found by the third 30-minute scripts/properties-long.sh run on 2026-11-22 (pass 15, in
+// Metamorphic.RigidMotionsLeaveDistancesUnchanged), right after the fix above had made a sliver
+// D1 only below its own ε: a far-source patch (source vertex 25, 5.3e5 away) rotated and moved to
+// coordinates near 4e6 (tests/data/regression/rotated-far-source-patch-sliver-at-a-rounded-window-
+// end.off). Edge 6-7's window from the source stopped 2.4e-11 short of vertex 7, the rounding of a
+// ray cast from 5.3e5 away, and a sliver of vertex 1's window, longer than its own ε (1.1e-11),
+// stayed there: 0.41 above D(7). A sliver within a coarser neighbour's ray-end precision
+// (tol::kRayEndRel × its scale, 5.3e-9 here) is removed; the 1.09e-6 one above is not.
+TEST(SolverRegression, ASliverAtAFarWindowsRoundedEndIsRemoved) {
+  expectCheckedSolveAgreesAtVertex("rotated-far-source-patch-sliver-at-a-rounded-window-end.off", "v:25", 7);
 }
 
 }  // namespace

@@ -92,9 +92,7 @@ std::string InvariantChecker::checkList(std::span<const Interval> list, double L
       why = os.str();
       return "in-range";
     }
-    // Its own ε (tinyLength): a coarser neighbour's does not make it tiny (edge_intervals.cpp,
-    // step 3).
-    const double tiny = tinyLength(w, L);
+    const double tiny = tinyLengthInList(list, i, L);
     // (An interval that is the whole edge has nothing to merge into: an edge shorter than ε.)
     if (w.b1 - w.b0 < tiny && !(w.b0 == 0.0 && w.b1 == L)) {
       os << "interval " << i << " " << describe(w) << " is shorter than epsilon = " << tiny;

@@ -59,6 +59,23 @@ inline double tinyLength(const Interval& w, double edgeLength) {
   return tol::kTinyIntervalRel * intervalLengthScale(w, edgeLength);
 }
 
+/// How far a neighbour's ray-cast end may be off, for step 3's D1 test (tol::kRayEndRel).
+inline double rayEndPrecision(const Interval& w, double edgeLength) {
+  return tol::kRayEndRel * intervalLengthScale(w, edgeLength);
+}
+
+/// The D1 threshold of the i-th interval of a sorted list: its own ε, or, when larger, the
+/// ray-end precision of a neighbour it touches (a neighbour counts when it touches or is within
+/// its own ε of touching: step 4 will sew it). See step 3 in edge_intervals.cpp.
+inline double tinyLengthInList(std::span<const Interval> list, std::size_t i, double edgeLength) {
+  double tiny = tinyLength(list[i], edgeLength);
+  if (i > 0 && list[i - 1].b1 >= list[i].b0 - tinyLength(list[i - 1], edgeLength))
+    tiny = std::max(tiny, rayEndPrecision(list[i - 1], edgeLength));
+  if (i + 1 < list.size() && list[i + 1].b0 <= list[i].b1 + tinyLength(list[i + 1], edgeLength))
+    tiny = std::max(tiny, rayEndPrecision(list[i + 1], edgeLength));
+  return tiny;
+}
+
 /// The first index i of `list` with !before(list[i]), where `before` holds on a prefix of the list
 /// (a sorted, non-overlapping list: e.g. "ends before x"). The search starts at `guess` and
 /// gallops outwards: it reads a cache line or two when the guess is close, O(log n) lines in any

@@ -41,6 +41,18 @@ inline constexpr double kFlatFaceRel = 1e-12;
 ///     (at the midpoint where they agree); larger ones are split by Eq. 1.
 inline constexpr double kTinyIntervalRel = 1e-11;
 
+/// D1 beside a coarser neighbour: a window's ends, cast by rays from its pseudo-source, are good
+/// to this × its length scale (measured ~1e-16 × the source distance; 100× that). A sliver of a
+/// near window at the end of a far one that is shorter than this × the far one's scale may be
+/// the far end's rounding and is removed (D1) even when longer than its own ε: one 2.4e-11 long,
+/// left where a window from a source 5.3e5 away stopped short of a vertex it reaches, stood 0.41
+/// above it (tests/data/regression/rotated-far-source-patch-sliver-at-a-rounded-window-end.off).
+/// Not the neighbour's whole ε (kTinyIntervalRel, 1e5× the rounding): a sliver that long is real,
+/// the start of a near saddle's shadow that fans out downstream where the far rays never reach
+/// (tests/data/regression/far-source-edge-end-left-to-a-pseudo-source.off: merged into the far
+/// window, a 1.09e-6 sliver lost vertex 1's fan and the next edge took 0.41 too much).
+inline constexpr double kRayEndRel = 1e-14;
+
 /// A vertex whose height over the opposite edge of one of its faces is below this × that face's
 /// longest edge lies on the edge, for its pseudo-source windows: its window on the edge is then
 /// at most a D1 sliver (kTinyIntervalRel) beside the direct windows through the face, so its fan
