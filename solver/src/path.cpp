@@ -26,9 +26,29 @@
 // along the path, and its length is the distance at the target up to the solver's tolerances.
 // The cheapest step at a point is straight on across an edge (the ray of the window giving its
 // distance), so the path bends only where windows end: at pseudo-sources, the corners they start
-// from. A window that passes through a zero-area face (propagate.cpp, passThroughZeroAreaFace)
-// is followed the same way: seen from a point of one edge of such a face, the other two lie on
-// the same line, and the crossing is the same point (a step of length zero along that line).
+// from.
+//
+// Zero-length steps. Several points of the mesh can lie at one position: a corner of a zero-area
+// face and the point of the face's long edge there, two vertices at one position joined through
+// such faces, a crossing exactly at a vertex. They are one place for the path, with one distance,
+// and the way on may leave from any of them: a window that passes through a zero-area face
+// (propagate.cpp, passThroughZeroAreaFace) reaches the point of the far edge at the same position,
+// and the path goes on from there. So at each step the tracer first gathers the points at the
+// current position (reached from it, through any face at any of them, by a step shorter than
+// tol::kPathSamePointRel × that face's longest edge), then takes the cheapest step from any of
+// them that moves, or ends at a source, and walks the zero-length steps to where it leaves from.
+// A zero-length step is never priced as a step: its value is the distance at the position itself,
+// which can come from the very point it leaves (a pseudo-source at the same position whose
+// distance was taken from that point), and it ties with the step that really goes on up to
+// rounding. It once won by 2.7e-11: from a vertex 5e-4 from a source, the window of a non-manifold
+// vertex at the same position on an edge through there, priced at the first vertex's own
+// distance, beat the straight step to the source; the path went on to the non-manifold vertex,
+// where the faces just crossed were barred (so that two zero-area faces could not hand the point
+// back and forth) and only an uphill one was left, and came back: 524288 too long
+// (corpus/fuzz_solver/regress/path-length-non-manifold-vertex-beside-a-duplicate-walks-back).
+// Every step now moves the path by more than kPathSamePointRel × its face's longest edge, and its
+// value, the length of a real path, is the smallest over the whole place: values never grow along
+// the path, so it never comes back to a place it has left.
 
 #include <algorithm>
 #include <cmath>
@@ -43,13 +63,20 @@ namespace {
 
 constexpr std::size_t kNoSource = ~std::size_t{0};
 
-// Where the tracer can go next, and what it costs from the current point to the source that way.
+// Where the tracer can go next, and what it costs from the current position to the source that
+// way.
 struct Step {
   double value = kInfinity;            // the step's length plus the distance left after it
   ResolvedPoint to{SurfacePoint::Kind::Vertex, kNoIndex, 0.0, {}, Vec3::Zero()};  // where it ends
   std::size_t source = kNoSource;      // it ends at this source (`to` is then that source)
-  Index through = kNoIndex;            // the face it crosses
-  bool moves = true;                   // false: it stays at the point (zero-area faces)
+  std::size_t from = 0;                // the Place it leaves from
+};
+
+// A point at the current position of the path: the current point itself (the first Place), or
+// one reached from an earlier Place by a zero-length step (see the top of the file).
+struct Place {
+  ResolvedPoint point;
+  std::size_t reachedFrom = 0;  // the Place before it on the zero-length steps from the first
 };
 
 ResolvedPoint vertexPoint(const Mesh& mesh, Index v) {
@@ -113,6 +140,33 @@ class Tracer {
         vertexDistance_(solver.vertexDistances()),
         sources_(solver.sources()) {}
 
+  // The cheapest step that moves the path on from `at`, or ends it at a source. `places` receives
+  // the points at `at`'s position the step may leave from: `at` first, then those reached from
+  // it by zero-length steps, each after the one it was reached from (the step's `from`).
+  Step cheapestStep(const ResolvedPoint& at, std::vector<Place>& places) const {
+    places.assign(1, Place{at, 0});
+    Step best;
+    if (at.kind == SurfacePoint::Kind::Vertex) {
+      if (const std::size_t source = sourceAtVertex(at.element); source != kNoSource)
+        return {0.0, at, source, 0};
+    }
+    // places grows as the faces at each Place are searched: a breadth-first search of the points
+    // at this position.
+    for (std::size_t k = 0; k < places.size(); ++k) {
+      const ResolvedPoint p = places[k].point;  // a copy: stepsThrough may grow places
+      for (Index g : facesAt(p)) stepsThrough(p, k, g, places, best);
+    }
+    return best;
+  }
+
+  // The source at vertex v, or kNoSource.
+  std::size_t sourceAtVertex(Index v) const {
+    for (std::size_t i = 0; i < sources_.size(); ++i)
+      if (sources_[i].kind == SurfacePoint::Kind::Vertex && sources_[i].element == v) return i;
+    return kNoSource;
+  }
+
+ private:
   // The faces p lies on.
   std::vector<Index> facesAt(const ResolvedPoint& p) const {
     switch (p.kind) {
@@ -131,22 +185,30 @@ class Tracer {
     return {};
   }
 
-  // The source at vertex v, or kNoSource.
-  std::size_t sourceAtVertex(Index v) const {
-    for (std::size_t i = 0; i < sources_.size(); ++i)
-      if (sources_[i].kind == SurfacePoint::Kind::Vertex && sources_[i].element == v) return i;
-    return kNoSource;
+  // Adds `to`, reached from places[from] by a zero-length step, to the places unless it is one
+  // already. Reaching a source vertex so ends the path there.
+  void addPlace(const ResolvedPoint& to, std::size_t from, std::vector<Place>& places,
+                Step& best) const {
+    for (const Place& known : places)
+      if (known.point.kind == to.kind && known.point.element == to.element) return;
+    places.push_back({to, from});
+    if (to.kind == SurfacePoint::Kind::Vertex) {
+      if (const std::size_t source = sourceAtVertex(to.element); source != kNoSource)
+        best = {0.0, to, source, from};
+    }
   }
 
-  // Offers `best` every step from p (on face g) through g: to a corner, to a source on g, across
-  // g to another edge (see the top of the file).
-  void stepsThrough(const ResolvedPoint& p, Index g, Step& best) const {
+  // Offers `best` every step from p = places[k] (on face g) through g that moves p, or ends at a
+  // source: to a corner, to a source on g, across g to another edge (see the top of the file).
+  // A corner or an edge of g at p's own position is a zero-length step: it goes to `places`.
+  void stepsThrough(const ResolvedPoint& p, std::size_t k, Index g, std::vector<Place>& places,
+                    Step& best) const {
     const auto& edges = mesh_.faceEdges(g);
     double scale = 0.0;  // the face's longest edge
     for (Index e : edges) scale = std::max(scale, mesh_.edge(e).length);
     const double still = tol::kPathSamePointRel * scale;
-    auto offer = [&](double value, const ResolvedPoint& to, std::size_t source, double length) {
-      if (value < best.value) best = {value, to, source, g, length > still};
+    auto offer = [&](double value, const ResolvedPoint& to, std::size_t source) {
+      if (value < best.value) best = {value, to, source, k};
     };
 
     // Sources and corners: straight lines in g, measured in g unfolded onto its first edge.
@@ -155,15 +217,14 @@ class Tracer {
     const Vec2 q = pointInFaceFrame(mesh_, p, g, edges[0]);
     for (std::size_t i = 0; i < sources_.size(); ++i) {
       if (!isOnFace(mesh_, sources_[i], g)) continue;
-      const double length = (pointInFaceFrame(mesh_, sources_[i], g, edges[0]) - q).norm();
-      offer(length, sources_[i], i, length);
+      offer((pointInFaceFrame(mesh_, sources_[i], g, edges[0]) - q).norm(), sources_[i], i);
     }
     for (Index u : mesh_.face(g)) {
       if (p.kind == SurfacePoint::Kind::Vertex && p.element == u) continue;
-      if (!std::isfinite(vertexDistance_[u])) continue;
       const ResolvedPoint corner = vertexPoint(mesh_, u);
       const double length = (pointInFaceFrame(mesh_, corner, g, edges[0]) - q).norm();
-      offer(vertexDistance_[u] + length, corner, kNoSource, length);
+      if (length <= still) addPlace(corner, k, places, best);
+      else if (std::isfinite(vertexDistance_[u])) offer(vertexDistance_[u] + length, corner, kNoSource);
     }
 
     // Across g onto each edge e that p is not on, then along one of e's windows from beyond e.
@@ -171,7 +232,12 @@ class Tracer {
       if (isOnEdge(mesh_, p, e)) continue;
       const Edge& E = mesh_.edge(e);
       const Vec2 qe = pointInFaceFrame(mesh_, p, g, e);  // g above e: qe.y() >= 0
-      double value = kInfinity, at = 0.0, length = 0.0;
+      if (qe.y() <= still && qe.x() >= -still && qe.x() <= E.length + still) {
+        // p lies on e (g has zero area, or p is at a corner of e): the crossing is p itself.
+        addPlace(edgePoint(mesh_, e, std::clamp(qe.x(), 0.0, E.length)), k, places, best);
+        continue;
+      }
+      double value = kInfinity, at = 0.0;
       for (const Interval& w : edges_[e].intervals()) {
         // A window whose source is on g's side came through g: the geodesic from p does not
         // cross e to follow it (it would come straight back); one of g's other edges, a corner
@@ -184,19 +250,16 @@ class Tracer {
         const double u = rise > 0.0 ? -s.y() / rise : 0.0;
         const double cx = std::clamp(s.x() + u * (qe.x() - s.x()), w.b0, w.b1);
         const Vec2 c(cx, 0.0);
-        const double toC = (qe - c).norm();
-        const double v = w.sigma + (c - s).norm() + toC;
+        const double v = w.sigma + (c - s).norm() + (qe - c).norm();
         if (v < value) {
           value = v;
           at = cx;
-          length = toC;
         }
       }
-      if (value < best.value) offer(value, edgePoint(mesh_, e, at), kNoSource, length);
+      if (value < best.value) offer(value, edgePoint(mesh_, e, at), kNoSource);
     }
   }
 
- private:
   const Mesh& mesh_;
   std::span<const EdgeIntervals> edges_;
   std::span<const double> vertexDistance_;
@@ -215,26 +278,19 @@ GeodesicPath GeodesicSolver::path(const SurfacePoint& target) const {
                                                                  : toPathPoint(mesh_, start));
   const Tracer tracer(*this);
   ResolvedPoint cur = start;
-  // Faces crossed since the path last moved: not entered again from the same point. A window
-  // through a zero-area face is followed by a step of length zero (see the top of the file);
-  // without this, two such faces on one line could hand the point back and forth for ever. After
-  // a step of positive length no face needs barring: going back into the face just crossed is
-  // never cheaper (the triangle inequality in that face), and barring it would also bar a face
-  // the step only ran along the edge of (a source further along a zero-area face's line).
-  std::vector<Index> crossedHere;
+  std::vector<Place> places;
+  std::vector<std::size_t> zeroLengthSteps;
+  // Each step moves the path (or ends it), and by at least kPathSamePointRel × a face's longest
+  // edge: the bound only stops a bug from looping for ever.
   const std::size_t maxSteps = 8 * (mesh_.numFaces() + mesh_.numVertices()) + 16;
   for (std::size_t step = 0; step < maxSteps; ++step) {
-    Step best;
-    if (cur.kind == SurfacePoint::Kind::Vertex) {
-      if (const std::size_t source = tracer.sourceAtVertex(cur.element); source != kNoSource)
-        best = {0.0, cur, source};
-    }
-    if (best.source == kNoSource) {
-      for (Index g : tracer.facesAt(cur))
-        if (std::find(crossedHere.begin(), crossedHere.end(), g) == crossedHere.end())
-          tracer.stepsThrough(cur, g, best);
-    }
+    Step best = tracer.cheapestStep(cur, places);
     GEODEX_REQUIRE(std::isfinite(best.value), "path tracing lost its way at step " << step);
+    // First the zero-length steps to the point the step leaves from, if that is not cur.
+    zeroLengthSteps.clear();
+    for (std::size_t k = best.from; k != 0; k = places[k].reachedFrom) zeroLengthSteps.push_back(k);
+    for (auto k = zeroLengthSteps.rbegin(); k != zeroLengthSteps.rend(); ++k)
+      result.points.push_back(toPathPoint(mesh_, places[*k].point));
     // A step to a source vertex (its corner, or a crossing at it) ends there.
     if (best.source == kNoSource && best.to.kind == SurfacePoint::Kind::Vertex)
       best.source = tracer.sourceAtVertex(best.to.element);
@@ -245,8 +301,6 @@ GeodesicPath GeodesicSolver::path(const SurfacePoint& target) const {
         result.length += (result.points[k].position - result.points[k - 1].position).norm();
       return result;
     }
-    if (best.moves) crossedHere.clear();
-    else crossedHere.push_back(best.through);
     cur = best.to;
     result.points.push_back(toPathPoint(mesh_, cur));
   }

@@ -518,6 +518,69 @@ TEST(SolverRegression, TwoEdgesNoLongerRegrowEachOtherForever) {
   EXPECT_TRUE(verify::checkUpperBound(d, upper, 1e-9).ok());
 }
 
+TEST(SolverRegression, PathDoesNotWalkBackAtANonManifoldVertexBesideADuplicate) {
+  // tests/data/regression/path-non-manifold-vertex-beside-a-duplicate.off, shrunk from
+  // corpus/fuzz_solver/regress/path-length-non-manifold-vertex-beside-a-duplicate-walks-back.
+  // Planar. Vertices 2 and 5 share the position (3, 3), on edge 3–4, the common edge of two
+  // zero-area faces on the line y = 3: 2-3-4 and 3-5-4. Face 5-6-7 hangs from vertex 5 alone
+  // (non-manifold there). The source is in face 0-1-2, 6.3e-6 from vertex 2.
+  //
+  //                   7              7 (4, 6)
+  //                 /   \
+  //     4 ------ 2,5 --- 3 --- 6      4 (1, 3), 2 and 5 (3, 3), 3 (4, 3), 6 (5, 3): all on y = 3
+  //               |  \   |
+  //               0 --- 1             0 (3, 0), 1 (5, 0)
+  //
+  // D(5) comes from D(2) through the two zero-area faces, and vertex 5's window on edge 3–4
+  // priced the zero-length step from vertex 2 onto that edge at D(2): 2.2e-16 less than the
+  // straight step from vertex 2 to the source. The tracer took it, went on to vertex 5, where the
+  // only face it had not just crossed was 5-6-7, walked uphill to vertex 6 and back, and then to
+  // the source through vertex 2 again: the path from vertex 4 was 4 too long. The tracer now
+  // gathers every point at the position (2, the edge point, 5) and leaves by the cheapest step
+  // that moves.
+  const Mesh mesh = loadMesh(std::string(GEODEX_SOURCE_DIR) +
+                             "/tests/data/regression/path-non-manifold-vertex-beside-a-duplicate.off");
+  ASSERT_EQ(mesh.position(2), mesh.position(5));
+  GeodesicSolver solver(mesh);
+  const SurfacePoint source = SurfacePoint::inFace(0, 1e-6, 1e-6, 1.0 - 2e-6);
+  solver.solve(std::vector<SurfacePoint>{source});
+  const Vec3 s = resolve(mesh, source).position;
+  const double diag = mesh.boundingBoxDiagonal();
+
+  // Every vertex; points along every edge, among them (3, 3) on edge 3–4; points in every face.
+  std::vector<SurfacePoint> queries;
+  for (Index v = 0; v < mesh.numVertices(); ++v) queries.push_back(SurfacePoint::atVertex(v));
+  for (Index e = 0; e < mesh.numEdges(); ++e)
+    for (double t : {0.001, 0.25, 1.0 / 3.0, 0.5, 2.0 / 3.0, 0.999})
+      queries.push_back(SurfacePoint::onEdge(mesh.edge(e).vertex[0], mesh.edge(e).vertex[1], t));
+  for (Index f = 0; f < mesh.numFaces(); ++f) {
+    queries.push_back(SurfacePoint::inFace(f, 1.0 / 3.0, 1.0 / 3.0, 1.0 / 3.0));
+    queries.push_back(SurfacePoint::inFace(f, 0.8, 0.1, 0.1));
+    queries.push_back(SurfacePoint::inFace(f, 0.1, 0.8, 0.1));
+    queries.push_back(SurfacePoint::inFace(f, 0.1, 0.1, 0.8));
+  }
+  for (const SurfacePoint& q : queries) {
+    SCOPED_TRACE("the path from " + formatSurfacePoint(q));
+    const double d = solver.distance(q);
+    ASSERT_TRUE(std::isfinite(d));
+    const GeodesicPath path = solver.path(q);
+    std::string points;
+    for (const PathPoint& p : path.points) points += " " + formatSurfacePoint(p.where);
+    // As long as the distance, within the fuzz_solver path-length oracle's tolerance.
+    EXPECT_NEAR(path.length, d, 1e-9 * (d + diag)) << "through" << points;
+    ASSERT_FALSE(path.points.empty());
+    EXPECT_LE((path.points.back().position - s).norm(), 1e-9 * diag) << "it ends at the source";
+    EXPECT_EQ(segmentOffTheSurface(mesh, path), "");
+    std::vector<Index> visited;
+    for (const PathPoint& p : path.points) {
+      if (p.where.kind != SurfacePoint::Kind::Vertex) continue;
+      EXPECT_EQ(std::count(visited.begin(), visited.end(), p.where.vertex), 0)
+          << "it comes back to vertex " << p.where.vertex << ":" << points;
+      visited.push_back(p.where.vertex);
+    }
+  }
+}
+
 TEST(SolverRegression, AnEdgeSourceAHairFromAVertexKeepsEveryEdgeThereCovered) {
   // A 2×2 grid of unit cells (planar, convex: distances are Euclidean) and a source on the
   // diagonal 4–8 at 6.4e-10 of its length from vertex 4, just outside the snapping band. Seen

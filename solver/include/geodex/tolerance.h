@@ -199,10 +199,13 @@ inline double vertexAgreementTolerance(double distance, double edgeLength, doubl
 /// edge a rounding error beside it. Two uses:
 ///  - a crossing this close to an end of its edge is that end's vertex, so the path turns at the
 ///    vertex, not at an edge point a hair from it (the next step starts from the right place);
-///  - a step this short does not move the point (through a zero-area face, whose edges lie on one
-///    line up to kFlatFaceRel: the crossing is the point itself), so the faces crossed since the
-///    path last moved are not entered again from there (two such faces on one line would hand the
-///    point back and forth).
+///  - a corner or an edge of a face this close to a path point is at the point's position (a
+///    zero-area face, whose edges lie on one line up to kFlatFaceRel; a vertex beside a duplicate
+///    joined to it through one): the tracer gathers every point at the position and takes the
+///    cheapest step that moves from any of them, instead of stepping between them at the
+///    distance of the position, where rounding decides and a step could lead away from the way
+///    on and back (corpus/fuzz_solver/regress/path-length-non-manifold-vertex-beside-a-duplicate-
+///    walks-back).
 /// Moving a path point by this much changes its length by at most twice as much: far below the
 /// 1e-9 × diagonal accuracy the path's length is held to.
 inline constexpr double kPathSamePointRel = kCoincideRel;
