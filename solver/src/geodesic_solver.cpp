@@ -282,60 +282,30 @@ void GeodesicSolver::propagate(Index edge, const Interval& w) {
   const FaceFrame& fr = mesh_.frame(f, edge);
   ++stats_.intervalsPropagated;
 
-  const Vec2 v1 = fr.apexPos, v2(E.length, 0.0);
-  const bool zeroArea = v1.y() <= tol::kFlatFaceRel * std::max(E.length, v1.norm());
-  {
-    const LocalWindow local{E.length, v1, w.b0, w.b1, Vec2(w.source.x(), -w.source.y())};
-    const LocalPropagation result = propagateLocal(local);
-    ++counters_.cases;
-    if (const auto kind = degeneracyOf(result.branch)) ++counters_[*kind];
-    if (result.branch == Fig6Branch::ZeroAreaFace) ++counters_.zeroAreaFaces;
-    if (result.branch == Fig6Branch::G1Outside) ++counters_.sourceOnEdgeLineOutside;
-    if (hooked()) observer_->onPropagation({f, edge, w, local, result});
+  const LocalWindow local{E.length, fr.apexPos, w.b0, w.b1, Vec2(w.source.x(), -w.source.y())};
+  const LocalPropagation result = propagateLocal(local);
+  ++counters_.cases;
+  if (const auto kind = degeneracyOf(result.branch)) ++counters_[*kind];
+  if (result.branch == Fig6Branch::ZeroAreaFace) ++counters_.zeroAreaFaces;
+  if (result.branch == Fig6Branch::G1Outside) ++counters_.sourceOnEdgeLineOutside;
+  if (hooked()) observer_->onPropagation({f, edge, w, local, result});
 
-    for (int c = 0; c < result.numChildren; ++c) {
-      const LocalChild& child = result.children[c];
-      // e1 = v0→v1, e2 = v1→v2 in the face frame.
-      const bool onE1 = child.edge == 1;
-      const Index ce = onE1 ? fr.edgeToV0 : fr.edgeToV2;
-      const Edge& CE = mesh_.edge(ce);
-      const Vec2 A = onE1 ? Vec2(0.0, 0.0) : v1;
-      const Vec2 B = onE1 ? v1 : v2;
-      const Index vA = onE1 ? E.vertex[0] : fr.apex;
-      const bool forward = CE.vertex[0] == vA;
-      const Vec2 origin2 = forward ? A : B;
-      const Vec2 dir = (forward ? B - A : A - B).normalized();
-      const Vec2 rel = local.source - origin2;
-      const double h = pred::cross(dir, rel);
-      const double interior = pred::cross(dir, (onE1 ? v2 : Vec2(0.0, 0.0)) - origin2);
-
-      Interval n;
-      n.b0 = (forward ? child.t0 : 1.0 - child.t1) * CE.length;
-      n.b1 = (forward ? child.t1 : 1.0 - child.t0) * CE.length;
-      n.b0 = std::clamp(n.b0, 0.0, CE.length);
-      n.b1 = std::clamp(n.b1, 0.0, CE.length);
-      if (!(n.b1 > n.b0)) continue;
-      // The source lies on the crossed face's side of the new edge (the rays leave the face
-      // through it); rounding can put it a hair across, which is a source on the line. Clearly
-      // across, the rays cannot leave through that edge at all, and the child is dropped (and
-      // counted): clamped onto the line, such a source stood 1.5e-8 from a corner 5.2e6 away
-      // from it when G5 handed a needle seen end-on its short side
-      // (corpus/fuzz_propagation/regress/two-face-distance-needle-seen-end-on-from-far-source).
-      // Fig. 6's case (1b) now decides that needle itself; this stays as the safety net for any
-      // other ε-decision that names an edge the wedge cannot reach.
-      const double inward = interior > 0 ? h : -h;
-      if (!zeroArea && inward < 0.0 &&
-          -inward > std::max(tol::kCoincideRel * localScale(local), tol::kCollinearSin * rel.norm())) {
-        ++counters_.childEdgesSeenFromOutside;
-        continue;
-      }
-      n.source = Vec2(rel.dot(dir), zeroArea ? std::abs(h) : std::max(0.0, inward));
-      n.sigma = w.sigma;
-      n.side = static_cast<std::uint8_t>(mesh_.sideOf(ce, f));
-      n.origin = w.origin;
-      if (CE.face[1 - n.side] == kNoIndex) n.markPropagated();
-      addInterval(ce, n, &result.branch);
-    }
+  const bool oneLine = childEdgesOnOneLine(local);
+  for (int c = 0; c < result.numChildren; ++c) {
+    const LocalChild& child = result.children[c];
+    const bool onE1 = child.edge == 1;
+    const Index ce = onE1 ? fr.edgeToV0 : fr.edgeToV2;
+    const Edge& CE = mesh_.edge(ce);
+    const Index start = onE1 ? E.vertex[0] : fr.apex;  // where the directed segment e1 or e2 starts
+    const ChildInterval made = childInterval(local, child, {CE.length, CE.vertex[0] == start}, oneLine);
+    if (made.outcome == ChildOutcome::SeenFromOutside) ++counters_.childEdgesSeenFromOutside;
+    if (made.outcome != ChildOutcome::Made) continue;
+    Interval n = made.interval;
+    n.sigma = w.sigma;
+    n.side = static_cast<std::uint8_t>(mesh_.sideOf(ce, f));
+    n.origin = w.origin;
+    if (CE.face[1 - n.side] == kNoIndex) n.markPropagated();
+    addInterval(ce, n, &result.branch);
   }
 }
 

@@ -157,5 +157,115 @@ TEST(Fig6, DecisionsAreScaleInvariant) {
   }
 }
 
+// ===  childInterval: a LocalChild on its mesh edge ================================================
+// The face v0 = (0,0), v2 = (2,0), v1 = (1,1) and the source s = (1,-1) below e0 unless said
+// otherwise; e1 and e2 are √2 long. Expected ranges and sources are worked out by hand in the
+// child edge's own frame (x from its vertex[0], y the source's distance from its line).
+
+const double kRoot2 = std::sqrt(2.0);
+
+TEST(ChildInterval, ChildOnE1ForwardKeepsTheSourceInTheEdgesFrame) {
+  // Inside the wedge of [0.5, 1.5]: e1 from t = 1/3 (Fig6.InsideWedgeGivesBothEdges).
+  const LocalWindow w = window(0.5, 1.5, Vec2(1.0, -1.0));
+  const ChildInterval c = childInterval(w, {1, 1.0 / 3.0, 1.0}, {kRoot2, true}, false);
+  ASSERT_EQ(c.outcome, ChildOutcome::Made);
+  EXPECT_NEAR(c.interval.b0, kRoot2 / 3.0, 1e-15);
+  EXPECT_NEAR(c.interval.b1, kRoot2, 1e-15);
+  // e1 runs along (1,1)/√2 from v0: s = (1,-1) projects onto x = 0 and lies √2 from the line.
+  EXPECT_NEAR(c.interval.source.x(), 0.0, 1e-15);
+  EXPECT_NEAR(c.interval.source.y(), kRoot2, 1e-15);
+  // At v1 (x = √2) the distance is |v1 − s| = |(0, 2)| = 2.
+  EXPECT_NEAR(c.interval.distanceAt(kRoot2), 2.0, 1e-15);
+}
+
+TEST(ChildInterval, ChildOnE2Forward) {
+  // e2 up to t = 2/3, from v1 along (1,-1)/√2: s − v1 = (0, −2) projects onto x = √2 and lies √2
+  // from the line.
+  const LocalWindow w = window(0.5, 1.5, Vec2(1.0, -1.0));
+  const ChildInterval c = childInterval(w, {2, 0.0, 2.0 / 3.0}, {kRoot2, true}, false);
+  ASSERT_EQ(c.outcome, ChildOutcome::Made);
+  EXPECT_NEAR(c.interval.b0, 0.0, 1e-15);
+  EXPECT_NEAR(c.interval.b1, 2.0 * kRoot2 / 3.0, 1e-15);
+  EXPECT_NEAR(c.interval.source.x(), kRoot2, 1e-15);
+  EXPECT_NEAR(c.interval.source.y(), kRoot2, 1e-15);
+  EXPECT_NEAR(c.interval.distanceAt(0.0), 2.0, 1e-15);  // at v1
+}
+
+TEST(ChildInterval, BackwardChildEdgeMirrorsRangeAndSource) {
+  // The same e2 child on a mesh edge running v2 → v1: the range [0, 2/3] of v1→v2 is
+  // [1/3, 1] × √2 from v2, and s − v2 = (−1, −1) projects onto (−1,1)/√2 at x = 0, √2 away.
+  const LocalWindow w = window(0.5, 1.5, Vec2(1.0, -1.0));
+  const ChildInterval c = childInterval(w, {2, 0.0, 2.0 / 3.0}, {kRoot2, false}, false);
+  ASSERT_EQ(c.outcome, ChildOutcome::Made);
+  EXPECT_NEAR(c.interval.b0, kRoot2 / 3.0, 1e-15);
+  EXPECT_NEAR(c.interval.b1, kRoot2, 1e-15);
+  EXPECT_NEAR(c.interval.source.x(), 0.0, 1e-15);
+  EXPECT_NEAR(c.interval.source.y(), kRoot2, 1e-15);
+  EXPECT_NEAR(c.interval.distanceAt(kRoot2), 2.0, 1e-15);  // at v1, now the far end
+  EXPECT_NEAR(c.interval.distanceAt(0.0), kRoot2, 1e-15);  // at v2: |(2,0) − (1,−1)|
+}
+
+TEST(ChildInterval, ScalesTheRangeByTheMeshEdgesLength) {
+  // The child's ends are t × the length the mesh gives, not |v0 v1| recomputed from the frame.
+  const LocalWindow w = window(0.5, 1.5, Vec2(1.0, -1.0));
+  const ChildInterval c = childInterval(w, {1, 0.25, 0.5}, {4.0, true}, false);
+  ASSERT_EQ(c.outcome, ChildOutcome::Made);
+  EXPECT_EQ(c.interval.b0, 1.0);
+  EXPECT_EQ(c.interval.b1, 2.0);
+}
+
+TEST(ChildInterval, ZeroAreaFaceTakesTheSourcesDistanceFromTheCommonLine) {
+  // v1 = (1, 0) on e0's line: the window [0.5, 1.5] passes through, e1 gets x ∈ [0.5, 1], t ∈
+  // [0.5, 1] of its length 1; s = (1, −1) is at x = 1 along it, 1 from the line.
+  const LocalWindow w = window(0.5, 1.5, Vec2(1.0, -1.0), Vec2(1.0, 0.0));
+  ASSERT_TRUE(childEdgesOnOneLine(w));
+  const LocalPropagation r = propagateLocal(w);
+  ASSERT_EQ(r.branch, Fig6Branch::ZeroAreaFace);
+  ASSERT_EQ(r.numChildren, 2);
+  const ChildInterval c = childInterval(w, r.children[0], {1.0, true}, true);
+  ASSERT_EQ(c.outcome, ChildOutcome::Made);
+  EXPECT_EQ(c.interval.b0, 0.5);
+  EXPECT_EQ(c.interval.b1, 1.0);
+  EXPECT_EQ(c.interval.source, Vec2(1.0, 1.0));
+  // e2 runs from v1 = (1, 0) to v2: s is at x = 0 along it, 1 from the line.
+  const ChildInterval d = childInterval(w, r.children[1], {1.0, true}, true);
+  ASSERT_EQ(d.outcome, ChildOutcome::Made);
+  EXPECT_EQ(d.interval.b0, 0.0);
+  EXPECT_EQ(d.interval.b1, 0.5);
+  EXPECT_EQ(d.interval.source, Vec2(0.0, 1.0));
+}
+
+TEST(ChildInterval, OneLineIsTheApexWithinFlatFaceOfTheEdgesAtV0) {
+  EXPECT_TRUE(childEdgesOnOneLine(window(0.5, 1.5, Vec2(1.0, -1.0), Vec2(1.0, 1e-13))));  // ≤ 1e-12 × 2
+  EXPECT_FALSE(childEdgesOnOneLine(window(0.5, 1.5, Vec2(1.0, -1.0), Vec2(1.0, 1e-11))));
+}
+
+TEST(ChildInterval, SourceClearlyAcrossTheChildEdgeIsDropped) {
+  // s = (−1, −0.5) lies above e1's line y = x, across it from v2: (0.5/√2 ≈ 0.35) far beyond the
+  // rounding band, so the rays cannot leave the face through e1.
+  const LocalWindow w = window(0.5, 1.5, Vec2(-1.0, -0.5));
+  EXPECT_EQ(childInterval(w, {1, 0.0, 1.0}, {kRoot2, true}, false).outcome, ChildOutcome::SeenFromOutside);
+  // In a zero-area face "across" means nothing: the same source is 1 from the common line.
+  const LocalWindow flat = window(0.5, 1.5, Vec2(-1.0, -0.5), Vec2(1.0, 0.0));
+  const ChildInterval c = childInterval(flat, {1, 0.0, 1.0}, {1.0, true}, true);
+  ASSERT_EQ(c.outcome, ChildOutcome::Made);
+  EXPECT_EQ(c.interval.source, Vec2(-1.0, 0.5));
+}
+
+TEST(ChildInterval, SourceARoundingErrorAcrossIsPutOnTheLine) {
+  // s on e1's line (y = x) moved 1e-13 across it: within max(kCoincideRel × 2, kCollinearSin ×
+  // |s|), so kept, with the source on the line (height 0) at its projection −√2.
+  const Vec2 s = Vec2(-1.0, -1.0) + 1e-13 * Vec2(-1.0, 1.0).normalized();
+  const ChildInterval c = childInterval(window(0.5, 1.5, s), {1, 0.0, 1.0}, {kRoot2, true}, false);
+  ASSERT_EQ(c.outcome, ChildOutcome::Made);
+  EXPECT_EQ(c.interval.source.y(), 0.0);
+  EXPECT_NEAR(c.interval.source.x(), -kRoot2, 1e-15);
+}
+
+TEST(ChildInterval, EmptyRangeMakesNothing) {
+  const LocalWindow w = window(0.5, 1.5, Vec2(1.0, -1.0));
+  EXPECT_EQ(childInterval(w, {2, 0.5, 0.5}, {kRoot2, true}, false).outcome, ChildOutcome::Empty);
+}
+
 }  // namespace
 }  // namespace geodex

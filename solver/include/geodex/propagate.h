@@ -24,6 +24,7 @@
 #include <string_view>
 
 #include "geodex/degeneracy.h"
+#include "geodex/interval.h"
 #include "geodex/mesh.h"
 
 namespace geodex {
@@ -70,5 +71,45 @@ LocalPropagation propagateLocal(const LocalWindow& w);
 
 /// The local length scale the predicates of one case are relative to: the face's longest edge.
 double localScale(const LocalWindow& w);
+
+// ===  From a LocalChild to an Interval on the child edge =======================================
+
+/// Whether the children of a propagation across this face lie on one line with e0: the apex is
+/// within kFlatFaceRel of e0's line, relative to max(L, |v1|). (Relative to the two edges at v0,
+/// not to localScale as propagateLocal's zero-area branch: the solver has always decided it so,
+/// and childInterval keeps that decision bit for bit.)
+bool childEdgesOnOneLine(const LocalWindow& w);
+
+/// The mesh edge a LocalChild lies on: e1 (v0→v1) or e2 (v1→v2) of the local frame.
+struct ChildEdge {
+  double length;  ///< the edge's length as the mesh has it (the child's ends are t × length)
+  /// The edge's vertex[0] is the start of the directed segment (v0 for e1, v1 for e2); false: the
+  /// edge runs the other way and the child's range and source are mirrored along it.
+  bool forward;
+};
+
+/// What became of a LocalChild.
+enum class ChildOutcome : std::uint8_t {
+  Made,             ///< an interval with b0 < b1
+  Empty,            ///< its range is empty once scaled and clamped to the edge
+  SeenFromOutside,  ///< the source lies clearly outside the face across the child edge: the rays
+                    ///< cannot leave through it (counted: childEdgesSeenFromOutside)
+};
+
+struct ChildInterval {
+  ChildOutcome outcome = ChildOutcome::Empty;
+  /// When Made: b0 < b1 in [0, edge length] along the edge's own direction, and the source in the
+  /// edge's frame (x from its vertex[0], y >= 0 on the crossed face's side). σ, side, origin and
+  /// flags are left at their defaults for the caller: they belong to the mesh, not the frame.
+  Interval interval;
+};
+
+/// The interval a propagation's child puts on its edge (Surazhsky et al. Sect. 3.3: the new
+/// interval keeps its parent's pseudo-source, re-expressed in the child edge's frame). Pure.
+///   w        the parent's local configuration (source below e0, as propagateLocal takes it)
+///   c        one of propagateLocal(w)'s children
+///   e        the mesh edge it lies on
+///   oneLine  childEdgesOnOneLine(w), computed once per propagation
+ChildInterval childInterval(const LocalWindow& w, const LocalChild& c, const ChildEdge& e, bool oneLine);
 
 }  // namespace geodex
