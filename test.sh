@@ -11,7 +11,7 @@ set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")"
 
 if [[ $# -gt 0 ]]; then PRESETS=("$@"); else PRESETS=(release debug asan fuzz); fi
-FUZZ_TARGETS=(fuzz_mesh_io fuzz_predicates fuzz_edge_update fuzz_propagation fuzz_solver
+FUZZ_TARGETS=(fuzz_mesh_io fuzz_predicates fuzz_edge_update fuzz_propagation fuzz_two_faces fuzz_solver
   geodex_corpus_open_findings geodex_corpus_degeneracy_coverage geodex_make_seeds)
 
 ./scripts/install-deps.sh

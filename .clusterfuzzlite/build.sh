@@ -11,7 +11,7 @@ SRC_DIR=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 : "${CXXFLAGS:=-O1 -g -fno-omit-frame-pointer -fsanitize=address,undefined,fuzzer-no-link}"
 : "${LIB_FUZZING_ENGINE:=-fsanitize=fuzzer}"
 BUILD=${WORK:-/tmp}/geodex-fuzz-build
-TARGETS=(fuzz_mesh_io fuzz_predicates fuzz_edge_update fuzz_propagation fuzz_solver)
+TARGETS=(fuzz_mesh_io fuzz_predicates fuzz_edge_update fuzz_propagation fuzz_two_faces fuzz_solver)
 
 generator=()
 command -v ninja >/dev/null && generator=(-G Ninja)

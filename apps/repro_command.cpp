@@ -43,7 +43,7 @@ Command addReproCommand(CLI::App& app) {
       "repro", "Replay a corpus or reproducer file with every check on and print the verdict");
   sub->add_option("FILE", o->path, "Corpus file (corpus/<target>/...) or reproducer")->required();
   sub->add_option("--target", o->target,
-                  "fuzz_mesh_io, fuzz_predicates, fuzz_edge_update, fuzz_propagation or fuzz_solver "
+                  "fuzz_mesh_io, fuzz_predicates, fuzz_edge_update, fuzz_propagation, fuzz_two_faces or fuzz_solver "
                   "(default: detected from the path and content)");
   sub->add_option("--svg", o->svg, "Draw the local configuration to this SVG file");
   return {sub, [o] { return runReproCommand(*o); }};

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Fuzzes every libFuzzer target (or the ones named) for SECONDS_PER_TARGET seconds each.
 #
-#   scripts/fuzz.sh [SECONDS_PER_TARGET] [TARGET...]      default: 60 s, all five targets
+#   scripts/fuzz.sh [SECONDS_PER_TARGET] [TARGET...]      default: 60 s, all six targets
 #
 # Configures and builds the `fuzz` preset (clang, ASan + UBSan, libFuzzer; the fuzz targets only),
 # then per target: fuzzes with 2 forked workers on its corpus (build/fuzz-work/<target>/corpus,
@@ -23,7 +23,7 @@ if [[ $# -gt 0 && $1 =~ ^[0-9]+$ ]]; then
 fi
 targets=("$@")
 if [[ ${#targets[@]} -eq 0 ]]; then
-  targets=(fuzz_mesh_io fuzz_predicates fuzz_edge_update fuzz_propagation fuzz_solver)
+  targets=(fuzz_mesh_io fuzz_predicates fuzz_edge_update fuzz_propagation fuzz_two_faces fuzz_solver)
 fi
 
 cmake --preset fuzz >/dev/null

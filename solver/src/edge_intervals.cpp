@@ -398,7 +398,7 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
             tiny = std::max(tiny, rayEndPrecision(L[r + 1], edgeLength));
           // An edge shorter than ε has nothing but D1 slivers: the last one left is the edge's
           // distance to the precision its source allows, and step 4 sews it to both ends.
-          // Removing it too left the edge uncovered (corpus/fuzz_propagation/regress/
+          // Removing it too left the edge uncovered (corpus/fuzz_two_faces/regress/
           // full-coverage-edge-shorter-than-epsilon-lost-its-last-interval).
           const bool lastOnShortEdge = edgeLength < tiny &&
                                        (w == 0 || L[w - 1].b1 < L[r].b0 - tinyKept) &&

@@ -128,7 +128,7 @@ LocalPropagation propagateLocal(const LocalWindow& w) {
   //     applies: the whole wedge leaves through the edge on its side of travel (e1 heading
   //     towards v0, e2 towards v2), as in (4)/(5). G4 handed the needle's e1 whole to a source
   //     beyond its apex, and the apex came out 64 short of its distance 1.36e7
-  //     (corpus/fuzz_propagation/regress/two-face-distance-needle-apex-between-far-source-and-window).
+  //     (corpus/fuzz_two_faces/regress/two-face-distance-needle-apex-between-far-source-and-window).
   const Side sideB0 = pred::sideOfRay(s, b0, v1);
   const Side sideB1 = pred::sideOfRay(s, b1, v1);
   if ((sideB0 == Side::Collinear && (v1 - b0).dot(b0 - s) < 0.0) ||
@@ -222,7 +222,7 @@ ChildInterval childInterval(const LocalWindow& w, const LocalChild& c, const Chi
   // it); rounding can put it a hair across, which is a source on the line. Clearly across, the
   // rays cannot leave through that edge at all, and the child is dropped (and counted by the
   // solver): clamped onto the line, such a source stood 1.5e-8 from a corner 5.2e6 away from it
-  // when G5 handed a needle seen end-on its short side (corpus/fuzz_propagation/regress/two-face-
+  // when G5 handed a needle seen end-on its short side (corpus/fuzz_two_faces/regress/two-face-
   // distance-needle-seen-end-on-from-far-source). Fig. 6's case (1b) now decides that needle
   // itself; this stays as the safety net for any other ε-decision that names an edge the wedge
   // cannot reach. Through a zero-area face "across" has no meaning: the source's distance from

@@ -1,8 +1,9 @@
 // The committed seeds exercise every enumerated degeneracy. Decodes corpus/<target>/seed with the
 // fuzz targets' own decoders (geodex/verify/repro.h) and counts, directly from the code under test:
-//   Fig. 6      degeneracyOf(propagateLocal(w).branch) over corpus/fuzz_predicates/seed  (G1–G5)
+//   Fig. 6      degeneracyOf(propagateLocal(w).branch) over corpus/fuzz_predicates/seed and
+//               corpus/fuzz_propagation/seed (its LocalWindow, localWindowOf)            (G1–G5)
 //   Algorithm 2 EdgeUpdateReport::degeneracies over corpus/fuzz_edge_update/seed        (D1–D4)
-//   solver      GeodesicSolver::counters() over corpus/fuzz_solver and fuzz_propagation seeds
+//   solver      GeodesicSolver::counters() over corpus/fuzz_solver and fuzz_two_faces seeds
 // Fails unless each of G1–G5 is counted by Fig. 6 and each of D1–D4 by Algorithm 2 (the solver
 // column is reported, and must reach every kind but G2, G3, D1–D4 that only crafted local cases
 // reach reliably). Usage: geodex_corpus_degeneracy_coverage CORPUS_DIR
@@ -45,12 +46,16 @@ int main(int argc, char** argv) {
   DegeneracyCounters fig6, algorithm2, solver;
   std::size_t files[3] = {0, 0, 0};
 
-  for (const auto& f : seedsOf(corpus, FuzzTarget::Predicates)) {
-    const auto c = decode(FuzzTarget::Predicates, readFileBytes(f.string()));
-    if (!c) continue;
-    ++files[0];
-    const LocalPropagation r = propagateLocal(std::get<PredicateCase>(*c).window);
-    if (const auto k = degeneracyOf(r.branch)) ++fig6[*k];
+  for (FuzzTarget t : {FuzzTarget::Predicates, FuzzTarget::Propagation}) {
+    for (const auto& f : seedsOf(corpus, t)) {
+      const auto c = decode(t, readFileBytes(f.string()));
+      if (!c) continue;
+      ++files[0];
+      const LocalWindow w = t == FuzzTarget::Predicates ? std::get<PredicateCase>(*c).window
+                                                        : localWindowOf(std::get<PropagationCase>(*c));
+      const LocalPropagation r = propagateLocal(w);
+      if (const auto k = degeneracyOf(r.branch)) ++fig6[*k];
+    }
   }
   for (const auto& f : seedsOf(corpus, FuzzTarget::EdgeUpdate)) {
     const auto c = decode(FuzzTarget::EdgeUpdate, readFileBytes(f.string()));
@@ -64,14 +69,14 @@ int main(int argc, char** argv) {
     list.insert(u.incoming, u.edgeLength, report, scratch);
     algorithm2 += report.degeneracies;
   }
-  for (FuzzTarget t : {FuzzTarget::Solver, FuzzTarget::Propagation}) {
+  for (FuzzTarget t : {FuzzTarget::Solver, FuzzTarget::TwoFaces}) {
     for (const auto& f : seedsOf(corpus, t)) {
       const auto c = decode(t, readFileBytes(f.string()));
       if (!c) continue;
       ++files[2];
-      const TriangleSoup& soup = t == FuzzTarget::Solver ? std::get<SolverCase>(*c).soup : std::get<PropagationCase>(*c).soup;
+      const TriangleSoup& soup = t == FuzzTarget::Solver ? std::get<SolverCase>(*c).soup : std::get<TwoFaceCase>(*c).soup;
       const std::vector<SurfacePoint> sources = t == FuzzTarget::Solver ? std::get<SolverCase>(*c).sources
-                                                                        : std::vector<SurfacePoint>{std::get<PropagationCase>(*c).source};
+                                                                        : std::vector<SurfacePoint>{std::get<TwoFaceCase>(*c).source};
       const Mesh mesh(soup);
       GeodesicSolver s(mesh);
       s.solve(sources);
@@ -79,7 +84,7 @@ int main(int argc, char** argv) {
     }
   }
 
-  std::printf("seeds decoded: %zu fuzz_predicates, %zu fuzz_edge_update, %zu fuzz_solver + fuzz_propagation\n",
+  std::printf("seeds decoded: %zu fuzz_predicates + fuzz_propagation, %zu fuzz_edge_update, %zu fuzz_solver + fuzz_two_faces\n",
               files[0], files[1], files[2]);
   std::printf("%-6s %12s %12s %12s\n", "kind", "Fig. 6", "Algorithm 2", "solver");
   int missing = 0;
@@ -90,14 +95,14 @@ int main(int argc, char** argv) {
                 static_cast<unsigned long long>(solver[kind]));
     const bool required = isGeometric(kind) ? fig6[kind] > 0 : algorithm2[kind] > 0;
     if (!required) {
-      std::printf("  missing: no %s seed hits %s\n", isGeometric(kind) ? "fuzz_predicates" : "fuzz_edge_update",
+      std::printf("  missing: no %s seed hits %s\n", isGeometric(kind) ? "fuzz_predicates or fuzz_propagation" : "fuzz_edge_update",
                   std::string(name(kind)).c_str());
       ++missing;
     }
   }
   for (DegeneracyKind kind : {DegeneracyKind::G1, DegeneracyKind::G4, DegeneracyKind::G5}) {
     if (solver[kind] == 0) {
-      std::printf("  missing: no fuzz_solver or fuzz_propagation seed hits %s in a whole solve\n",
+      std::printf("  missing: no fuzz_solver or fuzz_two_faces seed hits %s in a whole solve\n",
                   std::string(name(kind)).c_str());
       ++missing;
     }

@@ -290,7 +290,7 @@ TEST(Algorithm2, AFarPseudoSourceDoesNotWidenWhatStep4Sews) {
 }
 
 TEST(Algorithm2, AnEdgeShorterThanEpsilonKeepsItsLastInterval) {
-  // Regression (corpus/fuzz_propagation/regress/full-coverage-edge-shorter-than-epsilon-lost-its-
+  // Regression (corpus/fuzz_two_faces/regress/full-coverage-edge-shorter-than-epsilon-lost-its-
   // last-interval): an edge 1.1e-8 long seen from a source 3.3e5 away has ε = 3.3e-6 > its
   // length, so every window on it is a D1 sliver; step 3 merged them into each other and then
   // removed the last one too, leaving the edge uncovered. The nearer window must be the edge's.

@@ -460,7 +460,7 @@ TEST(SolverRegression, ASaddleOnAStackOfZeroAreaFacesSpreadsIntoTheFirstRealFace
 }
 
 TEST(SolverRegression, ANeedleSeenEndOnFromAFarSourceHandsItsShortSideNothing) {
-  // corpus/fuzz_propagation/regress/two-face-distance-needle-seen-end-on-from-far-source: face
+  // corpus/fuzz_two_faces/regress/two-face-distance-needle-seen-end-on-from-far-source: face
   // (0, 1, 2) is a needle (edge 0–2 is 3e-11 long) and source vertex 3 lies 5.2e6 away, nearly
   // on the line of edge 0–1. Seen from that far, s, b1 = v2 and the needle's apex are collinear
   // within kCollinearSin, and G5 gave e1 (edge 0–2) the whole edge; but the apex lies between
@@ -480,7 +480,7 @@ TEST(SolverRegression, ANeedleSeenEndOnFromAFarSourceHandsItsShortSideNothing) {
 }
 
 TEST(SolverRegression, ANeedleApexBetweenAFarCollinearSourceAndTheWindowIsNotG4) {
-  // corpus/fuzz_propagation/regress/two-face-distance-needle-apex-between-far-source-and-window:
+  // corpus/fuzz_two_faces/regress/two-face-distance-needle-apex-between-far-source-and-window:
   // two needles along the z axis. Face (0, 1, 2) runs from z = -36 through vertex 1 (z = 0) to
   // its apex, vertex 2 (z = 32); source vertex 3 is at z = 1.36e7 on face (1, 0, 3). Every path
   // to vertex 2 enters that face through edge 0–1 (z <= 0), so d(2) = |3 − 1| + |1 − 2|. Seen

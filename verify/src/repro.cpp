@@ -19,6 +19,7 @@
 #include "geodex/geodesic_solver.h"
 #include "geodex/mesh_io.h"
 #include "geodex/observer.h"
+#include "geodex/predicates.h"
 #include "geodex/tolerance.h"
 #include "geodex/verify/invariant_checker.h"
 #include "geodex/verify/oracles.h"
@@ -33,6 +34,7 @@ std::string_view name(FuzzTarget t) {
     case FuzzTarget::Predicates: return "fuzz_predicates";
     case FuzzTarget::EdgeUpdate: return "fuzz_edge_update";
     case FuzzTarget::Propagation: return "fuzz_propagation";
+    case FuzzTarget::TwoFaces: return "fuzz_two_faces";
     case FuzzTarget::Solver: return "fuzz_solver";
   }
   return "?";
@@ -242,6 +244,21 @@ PropagationSpec readPropagationSpec(ByteReader& r) {
   s.unitExp = r.i8();
   for (auto& p : s.points)
     for (auto& c : p) c = r.quantity();
+  s.b0 = r.quantity();
+  s.b1 = r.quantity();
+  s.sourceMode = r.u8();
+  s.sourceX = r.quantity();
+  s.sourceY = r.quantity();
+  s.sigma = r.quantity();
+  s.childDirections = r.u8();
+  return s;
+}
+
+TwoFaceSpec readTwoFaceSpec(ByteReader& r) {
+  TwoFaceSpec s;
+  s.unitExp = r.i8();
+  for (auto& p : s.points)
+    for (auto& c : p) c = r.quantity();
   s.winding = r.u8();
   s.source = readSourceSpec(r);
   return s;
@@ -302,6 +319,21 @@ std::vector<std::uint8_t> encode(const EdgeUpdateSpec& s) {
 }
 
 std::vector<std::uint8_t> encode(const PropagationSpec& s) {
+  ByteWriter w;
+  w.i8(s.unitExp);
+  for (const auto& p : s.points)
+    for (const auto& c : p) w.quantity(c);
+  w.quantity(s.b0);
+  w.quantity(s.b1);
+  w.u8(s.sourceMode);
+  w.quantity(s.sourceX);
+  w.quantity(s.sourceY);
+  w.quantity(s.sigma);
+  w.u8(s.childDirections);
+  return w.bytes();
+}
+
+std::vector<std::uint8_t> encode(const TwoFaceSpec& s) {
   ByteWriter w;
   w.i8(s.unitExp);
   for (const auto& p : s.points)
@@ -464,9 +496,65 @@ bool soupValid(const TriangleSoup& soup) {
   return true;
 }
 
+/// An edge the solver computes with: finite, in [kMinEdgeLength, kMaxEdgeLength] (as Mesh's check).
+bool edgeInRange(const Vec3& a, const Vec3& b) {
+  const double length = lengthForRangeCheck(b - a);
+  return length >= tol::kMinEdgeLength && length <= tol::kMaxEdgeLength;
+}
+
 std::optional<PropagationCase> makePropagationCase(const PropagationSpec& s) {
   const double unit = unitOf(s.unitExp);
   PropagationCase c;
+  for (int i = 0; i < 3; ++i)
+    for (int k = 0; k < 3; ++k) c.face[i][k] = fieldValue(s.points[i][k], -16, 16, unit, 16 * unit);
+  const Vec3 &v0 = c.face[0], &v2 = c.face[1], &v1 = c.face[2];
+  // The face a mesh would accept: every edge in range (no zero-length edge, no underflow).
+  if (!isFinite(v0) || !isFinite(v1) || !isFinite(v2) || !edgeInRange(v0, v2) ||
+      !edgeInRange(v0, v1) || !edgeInRange(v1, v2))
+    return std::nullopt;
+  const double L = (v2 - v0).norm();
+  Interval& w = c.window;
+  double b0 = latticeValue(s.b0, 0, 16) / 16.0 * L + nudgeValue(s.b0, L);
+  double b1 = latticeValue(s.b1, 0, 16) / 16.0 * L + nudgeValue(s.b1, L);
+  if (b0 > b1) std::swap(b0, b1);
+  w.b0 = std::max(b0, 0.0);
+  w.b1 = std::min(b1, L);
+  if (!(w.b0 < w.b1)) return std::nullopt;
+  const double scale = 16 * unit;
+  switch (s.sourceMode % 3) {
+    case 0:
+      w.source = Vec2(fieldValue(s.sourceX, -64, 80, unit, scale), std::abs(fieldValue(s.sourceY, 0, 64, unit, scale)));
+      break;
+    default: {
+      // On the line from v1 through b (in e0's frame, v1 above e0, the source below), beyond b.
+      const Vec2 apex = localWindowOf(c).apex;
+      const Vec2 b(s.sourceMode % 3 == 1 ? w.b0 : w.b1, 0.0);
+      const Vec2 away = b - apex;
+      const double lambda = std::abs(fieldValue(s.sourceX, 0, 64, 0.125, 0.125));
+      const Vec2 across = away.norm() > 0.0 ? Vec2(-away.y(), away.x()) / away.norm() : Vec2(0.0, 0.0);
+      const Vec2 below = b + lambda * away + fieldValue(s.sourceY, -16, 16, unit, scale) * across;
+      w.source = Vec2(below.x(), std::abs(below.y()));
+    }
+  }
+  w.sigma = std::abs(fieldValue(s.sigma, 0, 64, unit, scale));
+  w.origin = -1;
+  if (!isFinite(w.source) || !std::isfinite(w.sigma)) return std::nullopt;
+  // Only a window the solver can propagate: step 6 holds every interval of a list to at least its
+  // D1 ε (tinyLength, relative to its source's distance) unless it is the whole edge (the last
+  // one left on an edge shorter than ε); a narrower one is removed by Algorithm 2 step 3 before
+  // it is ever propagated, so what its children lose is lost nowhere. (Without this the coverage
+  // check asked a window 3.7e-7 wide, seen from 8.6e9 away, to cover the 800-long stretch of a
+  // grazed edge its rays' rounded directions smear over: corpus/fuzz_propagation/regress/coverage-
+  // window-below-its-epsilon-seen-grazing-from-far, now skipped.)
+  if (w.b1 - w.b0 < tinyLength(w, L) && !(w.b0 == 0.0 && w.b1 == L)) return std::nullopt;
+  c.e1Forward = (s.childDirections & 1) == 0;
+  c.e2Forward = (s.childDirections & 2) == 0;
+  return c;
+}
+
+std::optional<TwoFaceCase> makeTwoFaceCase(const TwoFaceSpec& s) {
+  const double unit = unitOf(s.unitExp);
+  TwoFaceCase c;
   for (const auto& p : s.points) {
     Vec3 x;
     for (int k = 0; k < 3; ++k) x[k] = fieldValue(p[k], -16, 16, unit, 16 * unit);
@@ -672,6 +760,9 @@ std::optional<FuzzCase> decode(FuzzTarget t, std::span<const std::uint8_t> bytes
     case FuzzTarget::Propagation:
       if (auto c = makePropagationCase(readPropagationSpec(r))) return *c;
       return std::nullopt;
+    case FuzzTarget::TwoFaces:
+      if (auto c = makeTwoFaceCase(readTwoFaceSpec(r))) return *c;
+      return std::nullopt;
     case FuzzTarget::Solver:
       if (auto c = makeSolverCase(readSolverSpec(r))) return *c;
       return std::nullopt;
@@ -742,7 +833,86 @@ struct ExactFig6 {
   std::string nearWhat;
 };
 
-ExactFig6 exactFig6(const LocalWindow& w) {
+// The same tree first in doubles, as a filter (CGAL's filtered predicates): each value with a
+// bound on its rounding error, generous (several times Higham's γ_n for the few operations per
+// value). Where every predicate on the path is certain — the value clearly on one side of both
+// band edges, or clearly inside the band — that is the exact decision; otherwise nullopt and the
+// rational evaluation decides. Inputs outside [1e-50, 1e50] (or 0) go to the rationals, so no
+// product here under- or overflows. Under ASan, GMP's allocations were three quarters of
+// fuzz_propagation's time; the filter leaves them to the few cases near a band edge.
+Tri filteredLeq(double q, double qError, double k, double S2, double S2RelError, bool& certain) {
+  constexpr double kSlack = 1e-14;  // the rounding of the thresholds themselves, generously
+  const double rootLo = std::sqrt(S2 * (1.0 - S2RelError)) * (1.0 - kSlack);
+  const double rootHi = std::sqrt(S2 * (1.0 + S2RelError)) * (1.0 + kSlack);
+  // Exactly: True when q ≤ k√S2 / 10, False when q ≥ 11 k√S2, Near in between.
+  if (q + qError <= 0.1 * k * rootLo * (1.0 - kSlack)) return Tri::True;
+  if (q - qError >= 11.0 * k * rootHi * (1.0 + kSlack)) return Tri::False;
+  if (q - qError > 0.1 * k * rootHi * (1.0 + kSlack) && q + qError < 11.0 * k * rootLo * (1.0 - kSlack))
+    return Tri::Near;
+  certain = false;
+  return Tri::Near;
+}
+
+std::optional<ExactFig6> filteredFig6(const LocalWindow& w) {
+  const double L = w.edgeLength, ax = w.apex.x(), ay = w.apex.y(), b0 = w.b0, b1 = w.b1;
+  const double sx = w.source.x(), sy = w.source.y();
+  for (double x : {L, ax, ay, b0, b1, sx, sy}) {
+    const double m = std::abs(x);
+    if (m != 0.0 && !(m >= 1e-50 && m <= 1e50)) return std::nullopt;
+  }
+  constexpr double u = 0x1p-53;  // unit roundoff
+  bool certain = true;
+  const double S2 = std::max({L * L, ax * ax + ay * ay, (ax - L) * (ax - L) + ay * ay});
+  const double S2Error = 16 * u;
+  ExactFig6 r;
+  auto done = [&](std::optional<Fig6Branch> b, const char* near = nullptr) -> std::optional<ExactFig6> {
+    if (!certain) return std::nullopt;
+    r.branch = b;
+    if (near) r.nearWhat = near;
+    return r;
+  };
+  const Tri flat = filteredLeq(ay, 0.0, tol::kFlatFaceRel, S2, S2Error, certain);
+  if (!certain || flat == Tri::Near) return done(std::nullopt, "apex height vs kFlatFaceRel");
+  if (flat == Tri::True) return done(Fig6Branch::ZeroAreaFace);
+  const Tri g1 = filteredLeq(std::abs(sy), 0.0, tol::kCoincideRel, S2, S2Error, certain);
+  if (!certain || g1 == Tri::Near) return done(std::nullopt, "|s.y| vs kCoincideRel (G1)");
+  if (g1 == Tri::True) {
+    const double d0 = b0 - sx, d1 = sx - b1;
+    const Tri in0 = filteredLeq(d0, 2 * u * std::abs(d0), tol::kCoincideRel, S2, S2Error, certain);
+    const Tri in1 = filteredLeq(d1, 2 * u * std::abs(d1), tol::kCoincideRel, S2, S2Error, certain);
+    if (!certain || in0 == Tri::Near || in1 == Tri::Near) return done(std::nullopt, "s.x vs [b0, b1] (G1 inside)");
+    return done(in0 == Tri::True && in1 == Tri::True ? Fig6Branch::G1Inside : Fig6Branch::G1Outside);
+  }
+  auto side = [&](double bx, Tri& collinear) {
+    const double ux = bx - sx, uy = -sy, vx = ax - bx, vy = ay;
+    const double z = ux * vy - uy * vx;
+    const double zError = 8 * u * (std::abs(ux * vy) + std::abs(uy * vx));
+    collinear = filteredLeq(std::abs(z), zError, tol::kCollinearSin, (ux * ux + uy * uy) * (vx * vx + vy * vy),
+                            32 * u, certain);
+    return z;  // its sign is certain where `collinear` is certainly False: |z| ≥ 11 k √S2 ≫ zError
+  };
+  Tri col0, col1;
+  const double z0 = side(b0, col0);
+  if (!certain || col0 == Tri::Near) return done(std::nullopt, "s, b0, v1 collinearity (G2/G4)");
+  if (col0 == Tri::True) {
+    const Tri atV0 = filteredLeq(b0, 0.0, tol::kCoincideRel, S2, S2Error, certain);
+    if (!certain || atV0 == Tri::Near) return done(std::nullopt, "b0 = v0 (G4 vs G2)");
+    return done(atV0 == Tri::True ? Fig6Branch::G4 : Fig6Branch::G2);
+  }
+  const double z1 = side(b1, col1);
+  if (!certain || col1 == Tri::Near) return done(std::nullopt, "s, b1, v1 collinearity (G3/G5)");
+  if (col1 == Tri::True) {
+    const double d = L - b1;
+    const Tri atV2 = filteredLeq(d, 2 * u * std::abs(d), tol::kCoincideRel, S2, S2Error, certain);
+    if (!certain || atV2 == Tri::Near) return done(std::nullopt, "b1 = v2 (G5 vs G3)");
+    return done(atV2 == Tri::True ? Fig6Branch::G5 : Fig6Branch::G3);
+  }
+  if (z0 > 0) return done(Fig6Branch::LeftOfWedge);
+  if (z1 < 0) return done(Fig6Branch::RightOfWedge);
+  return done(Fig6Branch::InsideWedge);
+}
+
+ExactFig6 exactFig6Rational(const LocalWindow& w) {
   const Rat L(w.edgeLength), ax(w.apex.x()), ay(w.apex.y()), b0(w.b0), b1(w.b1);
   const Rat sx(w.source.x()), sy(w.source.y());
   Rat S2 = L * L;
@@ -791,6 +961,12 @@ ExactFig6 exactFig6(const LocalWindow& w) {
   if (z0 > 0) return r.branch = Fig6Branch::LeftOfWedge, r;
   if (z1 < 0) return r.branch = Fig6Branch::RightOfWedge, r;
   return r.branch = Fig6Branch::InsideWedge, r;
+}
+
+/// The Fig. 6 tree on exact rationals, through the double filter where that is certain.
+ExactFig6 exactFig6(const LocalWindow& w) {
+  if (auto r = filteredFig6(w)) return *std::move(r);
+  return exactFig6Rational(w);
 }
 
 struct Exit {
@@ -843,6 +1019,88 @@ std::string describeResult(const LocalPropagation& r) {
   return os.str();
 }
 
+
+// ===  Coverage of a window's wedge (fuzz_predicates, fuzz_propagation) ==========================
+
+/// The angle by which an ε-decision of Fig. 6 may move a boundary ray of the wedge: the
+/// collinearity angle, or a coincidence distance seen from s; 100× that is the slack of the
+/// coverage and soundness checks (bugs move rays by far more).
+double wedgeSlack(const LocalWindow& w) {
+  const Vec2 s = w.source, b0(w.b0, 0.0), b1(w.b1, 0.0);
+  return 100.0 * (tol::kCollinearSin + tol::kCoincideRel * localScale(w) / std::min((b0 - s).norm(), (b1 - s).norm()));
+}
+
+/// What is wrong with propagateLocal's children (at most two, on e1 or e2, one per edge,
+/// 0 <= t0 <= t1 <= 1), or nullptr.
+const char* localChildrenProblem(const LocalPropagation& r) {
+  if (r.numChildren > 2) return "more than two children";
+  for (int i = 0; i < r.numChildren; ++i) {
+    const LocalChild& ch = r.children[i];
+    if ((ch.edge != 1 && ch.edge != 2) || !(ch.t0 >= 0.0 && ch.t0 <= ch.t1 && ch.t1 <= 1.0))
+      return i == 0 ? "child 0 outside 0 <= t0 <= t1 <= 1" : "child 1 outside 0 <= t0 <= t1 <= 1";
+    if (i == 1 && ch.edge == r.children[0].edge) return "two children on the same edge";
+  }
+  return nullptr;
+}
+
+struct Coverage {
+  bool imageBelowEpsilon = false;  ///< nothing to cover: the wedge's image is below ε
+  std::string uncovered;           ///< the first ray no child covers, or "" when all are covered
+};
+
+/// Coverage: every sampled ray from s through the window [b0, b1] that enters the face leaves it
+/// through e1 or e2 inside one of `covering` (ranges in the local parameter of e1, e2), up to
+/// 1e-12 in the parameter or wedgeSlack's angle from a covering range's end. Only for the
+/// branches whose rays cross the face (not G1, not zero-area).
+Coverage wedgeCoverage(const LocalWindow& w, std::span<const LocalChild> covering) {
+  Coverage result;
+  const Vec2 v0(0.0, 0.0), v2(w.edgeLength, 0.0), v1 = w.apex, s = w.source;
+  const double scale = localScale(w);
+  const double kappa = wedgeSlack(w);
+  std::array<Vec2, 4> childEnds;
+  std::size_t ends = 0;
+  for (const LocalChild& ch : covering) {
+    if (ends + 2 > childEnds.size()) break;
+    childEnds[ends++] = childPoint(w, ch.edge, ch.t0);
+    childEnds[ends++] = childPoint(w, ch.edge, ch.t1);
+  }
+  constexpr int kSamples = 16;
+  // Where the wedge's image on e1 ∪ e2 is shorter than ε (a far, grazing source seen through a
+  // tiny window), its children are below D1's ε or empty after rounding: nothing to cover. The ε
+  // is the children's own (intervalLengthScale: the distance of the source when that is larger
+  // than the face): a window 1.5e-9 wide seen from 3.5e7 away has ray directions that differ by
+  // less than one ulp of the source's coordinates, and its image on e2, 1e-9 long against an ε
+  // of 3.5e-4, rounds to nothing (corpus/fuzz_predicates/regress/coverage-image-below-the-far-
+  // source-epsilon).
+  Vec2 lo(INFINITY, INFINITY), hi(-INFINITY, -INFINITY);
+  for (int i = 0; i <= kSamples; ++i) {
+    const Exit x = exitOf(s, Vec2(w.b0 + (w.b1 - w.b0) * i / kSamples, 0.0), v0, v1, v2);
+    if (x.edge != 0) lo = lo.cwiseMin(x.point), hi = hi.cwiseMax(x.point);
+  }
+  const double imageTiny = tol::kTinyIntervalRel * std::max(scale, std::abs(s.x()) + std::abs(s.y()));
+  if ((hi - lo).norm() <= imageTiny) {
+    result.imageBelowEpsilon = true;
+    return result;
+  }
+  for (int i = 0; i <= kSamples; ++i) {
+    const Vec2 p(w.b0 + (w.b1 - w.b0) * i / kSamples, 0.0);
+    const Exit x = exitOf(s, p, v0, v1, v2);
+    if (x.edge == 0) continue;  // ray along e0's line: nothing enters
+    bool covered = false;
+    for (const LocalChild& ch : covering)
+      covered = covered || (ch.edge == x.edge && x.t >= ch.t0 - 1e-12 && x.t <= ch.t1 + 1e-12);
+    for (std::size_t k = 0; k < ends && !covered; ++k)
+      if (sinAngle(x.point - s, childEnds[k] - s) <= kappa) covered = true;
+    if (!covered) {
+      std::ostringstream os;
+      os << std::setprecision(17) << "the ray from s through x = " << p.x() << " leaves the face on e"
+         << x.edge << " at t = " << x.t << ", outside every child";
+      result.uncovered = os.str();
+      return result;
+    }
+  }
+  return result;
+}
 }  // namespace
 
 Verdict checkPredicates(const PredicateCase& c) {
@@ -860,14 +1118,7 @@ Verdict checkPredicates(const PredicateCase& c) {
   auto where = [&] { return " in " + describeLocal(w) + " → " + describeResult(r); };
 
   // (b) the children's ranges.
-  if (r.numChildren > 2) return fail(v, "child-range", "more than two children" + where());
-  for (int i = 0; i < r.numChildren; ++i) {
-    const LocalChild& ch = r.children[i];
-    if ((ch.edge != 1 && ch.edge != 2) || !(ch.t0 >= 0.0 && ch.t0 <= ch.t1 && ch.t1 <= 1.0))
-      return fail(v, "child-range", "child " + std::to_string(i) + " outside 0 <= t0 <= t1 <= 1" + where());
-    if (i == 1 && ch.edge == r.children[0].edge)
-      return fail(v, "child-range", "two children on the same edge" + where());
-  }
+  if (const char* why = localChildrenProblem(r)) return fail(v, "child-range", why + where());
 
   // (a) the branch agrees with the exact tree where every predicate on its path is clear.
   const ExactFig6 exact = exactFig6(w);
@@ -882,51 +1133,12 @@ Verdict checkPredicates(const PredicateCase& c) {
   if (r.branch == Fig6Branch::ZeroAreaFace || r.branch == Fig6Branch::G1Inside ||
       r.branch == Fig6Branch::G1Outside)
     return v;
-  const Vec2 v0(0.0, 0.0), v2(w.edgeLength, 0.0), v1 = w.apex, s = w.source;
-  const Vec2 b0(w.b0, 0.0), b1(w.b1, 0.0);
+  const Vec2 s = w.source, b0(w.b0, 0.0), b1(w.b1, 0.0);
   const double scale = localScale(w);
-  // An ε-decision may move a boundary ray by the collinearity angle, or by a coincidence
-  // distance seen from s; 100× that is the slack (bugs move rays by far more).
-  const double kappa =
-      100.0 * (tol::kCollinearSin + tol::kCoincideRel * scale / std::min((b0 - s).norm(), (b1 - s).norm()));
-  std::vector<Vec2> childEnds;
-  for (int i = 0; i < r.numChildren; ++i) {
-    childEnds.push_back(childPoint(w, r.children[i].edge, r.children[i].t0));
-    childEnds.push_back(childPoint(w, r.children[i].edge, r.children[i].t1));
-  }
-  constexpr int kSamples = 16;
-  // Where the wedge's image on e1 ∪ e2 is shorter than ε (a far, grazing source seen through a
-  // tiny window), its children are below D1's ε or empty after rounding: nothing to cover. The ε
-  // is the children's own (intervalLengthScale: the distance of the source when that is larger
-  // than the face): a window 1.5e-9 wide seen from 3.5e7 away has ray directions that differ by
-  // less than one ulp of the source's coordinates, and its image on e2, 1e-9 long against an ε
-  // of 3.5e-4, rounds to nothing (corpus/fuzz_predicates/regress/coverage-image-below-the-far-
-  // source-epsilon).
-  Vec2 lo(INFINITY, INFINITY), hi(-INFINITY, -INFINITY);
-  for (int i = 0; i <= kSamples; ++i) {
-    const Exit x = exitOf(s, Vec2(w.b0 + (w.b1 - w.b0) * i / kSamples, 0.0), v0, v1, v2);
-    if (x.edge != 0) lo = lo.cwiseMin(x.point), hi = hi.cwiseMax(x.point);
-  }
-  const double imageTiny = tol::kTinyIntervalRel * std::max(scale, std::abs(s.x()) + std::abs(s.y()));
-  if ((hi - lo).norm() <= imageTiny) return v.summary += " (image below epsilon)", v;
-  for (int i = 0; i <= kSamples; ++i) {
-    const Vec2 p(w.b0 + (w.b1 - w.b0) * i / kSamples, 0.0);
-    const Exit x = exitOf(s, p, v0, v1, v2);
-    if (x.edge == 0) continue;  // ray along e0's line: nothing enters
-    bool covered = false;
-    for (int k = 0; k < r.numChildren && !covered; ++k) {
-      const LocalChild& ch = r.children[k];
-      covered = ch.edge == x.edge && x.t >= ch.t0 - 1e-12 && x.t <= ch.t1 + 1e-12;
-    }
-    for (const Vec2& y : childEnds)
-      if (!covered && sinAngle(x.point - s, y - s) <= kappa) covered = true;
-    if (!covered) {
-      std::ostringstream os;
-      os << std::setprecision(17) << "the ray from s through x = " << p.x() << " leaves the face on e"
-         << x.edge << " at t = " << x.t << ", outside every child" << where();
-      return fail(v, "coverage", os.str());
-    }
-  }
+  const double kappa = wedgeSlack(w);
+  const Coverage coverage = wedgeCoverage(w, {r.children.data(), r.numChildren});
+  if (coverage.imageBelowEpsilon) return v.summary += " (image below epsilon)", v;
+  if (!coverage.uncovered.empty()) return fail(v, "coverage", coverage.uncovered + where());
   for (int i = 0; i < r.numChildren; ++i) {
     const LocalChild& ch = r.children[i];
     for (double t : {ch.t0, 0.5 * (ch.t0 + ch.t1), ch.t1}) {
@@ -942,6 +1154,172 @@ Verdict checkPredicates(const PredicateCase& c) {
       return fail(v, "soundness", os.str());
     }
   }
+  return v;
+}
+
+// ===  fuzz_propagation: one propagation step against the 3-D geometry ===========================
+
+LocalWindow localWindowOf(const PropagationCase& c) {
+  // As Mesh builds the frame of a face on its edge (mesh.cpp) and GeodesicSolver::propagate the
+  // window from an interval: x from v0 along e0, the apex's height by the cross product, the
+  // source reflected below e0.
+  const Vec3 origin = c.face[0];
+  const double L = (c.face[1] - origin).norm();
+  const Vec3 dir = (c.face[1] - origin) / L;
+  const Vec3 rel = c.face[2] - origin;
+  const Vec2 apex(rel.dot(dir), rel.cross(dir).norm());
+  return {L, apex, c.window.b0, c.window.b1, Vec2(c.window.source.x(), -c.window.source.y())};
+}
+
+namespace {
+
+/// Coordinates of a point of the face's plane relative to e0: along e0 from v0, and across it
+/// towards the apex. A point of the face (a child edge's point) is on the apex's side, so its
+/// second coordinate is its distance from e0's line, taken without forming the plane's normal:
+/// for a needle that normal is the direction of a tiny cross product and carries rounding
+/// divided by the needle's height, which these coordinates do not.
+/// Takes points as offsets from v0 (p − v0), never as positions: a point placed in absolute
+/// coordinates is rounded to the ulp of its coordinates, which for a 1e-12 face at 1408 is a
+/// fifth of the face (found by the fuzzer), while an offset from v0 is rounded relative to itself.
+struct PlaneCoordinates {
+  Vec3 along;  ///< e0's unit direction
+  Vec2 operator()(const Vec3& fromV0) const { return {fromV0.dot(along), fromV0.cross(along).norm()}; }
+};
+
+/// The mesh edge a child of the case lands on (e1: v0v1, e2: v1v2), from its vertex[0] to its
+/// vertex[1] as the case's directions say, and the face's third vertex.
+struct CaseChildEdge {
+  Vec3 from, to, opposite;
+  double length;  ///< |to − from|, as Mesh computes an edge's length
+  bool forward;
+};
+CaseChildEdge childEdgeOf(const PropagationCase& c, int edge) {
+  const Vec3 &v0 = c.face[0], &v2 = c.face[1], &v1 = c.face[2];
+  const bool onE1 = edge == 1;
+  const bool forward = onE1 ? c.e1Forward : c.e2Forward;
+  const Vec3& segmentStart = onE1 ? v0 : v1;
+  const Vec3& segmentEnd = onE1 ? v1 : v2;
+  CaseChildEdge e{forward ? segmentStart : segmentEnd, forward ? segmentEnd : segmentStart, onE1 ? v2 : v0, 0.0, forward};
+  e.length = (e.to - e.from).norm();
+  return e;
+}
+
+/// childInterval for one of the case's children, on its edge as childEdgeOf gives it.
+ChildInterval childIntervalOf(const PropagationCase& c, const LocalWindow& w, const LocalChild& ch) {
+  const CaseChildEdge e = childEdgeOf(c, ch.edge);
+  return childInterval(w, ch, {e.length, e.forward}, childEdgesOnOneLine(w));
+}
+
+}  // namespace
+
+Verdict checkPropagation(const PropagationCase& c) {
+  Verdict v;
+  v.interesting = true;
+  const LocalWindow w = localWindowOf(c);
+  LocalPropagation r;
+  try {
+    r = propagateLocal(w);
+  } catch (const std::exception& e) {
+    return fail(v, "unexpected-exception", std::string("propagateLocal threw: ") + e.what());
+  }
+  ++v.degeneracies.cases;
+  if (const auto k = degeneracyOf(r.branch)) ++v.degeneracies[*k];
+  if (r.branch == Fig6Branch::ZeroAreaFace) ++v.degeneracies.zeroAreaFaces;
+  if (r.branch == Fig6Branch::G1Outside) ++v.degeneracies.sourceOnEdgeLineOutside;
+  v.summary = name(r.branch);
+  auto where = [&] {
+    std::ostringstream os;
+    os << std::setprecision(17) << "\n  face v0 (" << c.face[0].transpose() << ") v2 ("
+       << c.face[1].transpose() << ") v1 (" << c.face[2].transpose() << ")\n  window "
+       << describeInterval(c.window) << "\n  local " << describeLocal(w) << " → " << describeResult(r)
+       << "\n  e1 " << (c.e1Forward ? "v0→v1" : "v1→v0") << ", e2 " << (c.e2Forward ? "v1→v2" : "v2→v1");
+    return os.str();
+  };
+
+  // (c) propagateLocal's children, then (d) its branch against the exact tree where every
+  // predicate on the path is clearly decided (fuzz_predicates' checks, on this face's frame).
+  if (const char* why = localChildrenProblem(r)) return fail(v, "child-range", why + where());
+  const ExactFig6 exact = exactFig6(w);
+  if (exact.branch && *exact.branch != r.branch) {
+    return fail(v, "exact-predicates",
+                "exactly evaluated the tree ends in " + std::string(name(*exact.branch)) + where());
+  }
+
+  // The children as the solver makes them (childInterval), each checked against the 3-D face.
+  const PlaneCoordinates plane{(c.face[1] - c.face[0]).normalized()};
+  const double sx = c.window.source.x(), sy = c.window.source.y(), sigma = c.window.sigma;
+  std::array<LocalChild, 2> made{};
+  int numMade = 0;
+  for (int i = 0; i < r.numChildren; ++i) {
+    const LocalChild& ch = r.children[i];
+    const CaseChildEdge e = childEdgeOf(c, ch.edge);
+    const double length = e.length;
+    const ChildInterval child = childIntervalOf(c, w, ch);
+    if (child.outcome == ChildOutcome::SeenFromOutside) ++v.degeneracies.childEdgesSeenFromOutside;
+    if (child.outcome != ChildOutcome::Made) continue;
+    const Interval& n = child.interval;
+    auto childText = [&] {
+      std::ostringstream os;
+      os << std::setprecision(17) << "the e" << int(ch.edge) << " child " << describeInterval(n)
+         << " (edge length " << length << ")";
+      return os.str();
+    };
+    if (!(n.b0 >= 0.0 && n.b0 < n.b1 && n.b1 <= length))
+      return fail(v, "child-range", childText() + " is not within 0 <= b0 < b1 <= its edge's length" + where());
+    if (!(isFinite(n.source) && n.source.y() >= 0.0))
+      return fail(v, "child-range", childText() + " has a source off its side or not finite" + where());
+    if (numMade == 1 && made[0].edge == ch.edge)
+      return fail(v, "child-range", "two children on e" + std::to_string(ch.edge) + where());
+    // Back to the parameter along the directed segment e1 or e2, for the coverage check.
+    made[numMade++] = e.forward ? LocalChild{ch.edge, n.b0 / length, n.b1 / length}
+                              : LocalChild{ch.edge, 1.0 - n.b1 / length, 1.0 - n.b0 / length};
+
+    // (a) The child's distance σ + |x − s'| at points of its range equals the parent's distance
+    // field there, σ + |P − S3|, with S3 the parent's pseudo-source unfolded into the face's
+    // plane on the far side of e0 from the apex: in the plane coordinates (along e0, towards the
+    // apex) S3 = (s.x, −s.y) and a point P of the face is (a, b) with b >= 0, so |P − S3| =
+    // hypot(a − s.x, b + s.y). P is placed from the mesh positions, x along the child edge from
+    // its vertex[0]; nothing of the solver's frame or of the child's source is used.
+    //
+    // Tolerance: every length here is a difference of input positions or derived from such
+    // differences (no point is placed in absolute coordinates: see PlaneCoordinates; a difference
+    // of two doubles is rounded relative to itself, so the coordinates' magnitude does not enter). The solver's
+    // frame, childInterval's re-expression of the source and this construction each round by a
+    // few ulps of the largest length involved, σ + |s| + the face's longest edge: kRoundingRel
+    // (45 ulps) of that. Plus one deliberate step of the solver: a source within the drop band
+    // on the wrong side of the child edge's line (rounding, says childInterval) is put on the
+    // line, which lowers the child's distances by at most its height there, `acrossLine`.
+    const Vec3 fromV0 = e.from - c.face[0];
+    const Vec2 Q0 = plane(fromV0), Q1 = plane(e.to - c.face[0]), Qo = plane(e.opposite - c.face[0]), S(sx, -sy);
+    const Vec2 u = (Q1 - Q0).normalized();
+    const double towardsFace = pred::cross(u, Qo - Q0) > 0.0 ? 1.0 : -1.0;
+    const double acrossLine = std::max(0.0, -towardsFace * pred::cross(u, S - Q0));
+    const double tolerance = tol::kRoundingRel * (sigma + Vec2(sx, sy).norm() + localScale(w)) + acrossLine;
+    const Vec3 edgeDir = (e.to - e.from) / length;
+    for (double f : {0.0, 0.25, 0.5, 0.75, 1.0}) {
+      const double x = f == 1.0 ? n.b1 : n.b0 + f * (n.b1 - n.b0);
+      const Vec2 P = plane(fromV0 + x * edgeDir);
+      const double truth = sigma + std::hypot(P.x() - sx, P.y() + sy);
+      const double claim = sigma + std::hypot(x - n.source.x(), n.source.y());
+      if (!(std::abs(claim - truth) <= tolerance)) {
+        std::ostringstream os;
+        os << std::setprecision(17) << "at x = " << x << " " << childText() << " gives sigma + "
+           << claim - sigma << " but the parent's pseudo-source unfolded in 3-D is " << truth - sigma
+           << " away (tolerance " << tolerance << ")";
+        return fail(v, "unfolding", os.str() + where());
+      }
+    }
+  }
+
+  // (b) Coverage by the children the solver keeps. Along e0 (G1) and through a zero-area face
+  // the whole-edge children are the contract, nothing to sample (as in fuzz_predicates).
+  if (r.branch != Fig6Branch::ZeroAreaFace && r.branch != Fig6Branch::G1Inside &&
+      r.branch != Fig6Branch::G1Outside) {
+    const Coverage coverage = wedgeCoverage(w, {made.data(), static_cast<std::size_t>(numMade)});
+    if (!coverage.uncovered.empty()) return fail(v, "coverage", coverage.uncovered + where());
+    if (coverage.imageBelowEpsilon) v.summary += " (image below epsilon)";
+  }
+  v.summary += ", " + std::to_string(numMade) + " of " + std::to_string(r.numChildren) + " children made";
   return v;
 }
 
@@ -1022,7 +1400,7 @@ Verdict checkEdgeUpdate(const EdgeUpdateCase& c) {
   return v;
 }
 
-// ===  The unfolding check (fuzz_propagation, fuzz_solver) =======================================
+// ===  The unfolding check (fuzz_two_faces, fuzz_solver) =========================================
 
 namespace {
 
@@ -1090,7 +1468,7 @@ class UnfoldingChecker : public SolverObserver {
     const double amplification = 1e-14 * window_.source.norm() * (rel.norm() / h);
     // s3 and the sample point are placed in 3D, each to the rounding of its coordinates
     // (tol::kPositionRoundingRel): far from the origin that is more than a small face's
-    // unfolding can be checked to (corpus/fuzz_propagation/regress/unfolding-points-placed-far-
+    // unfolding can be checked to (corpus/fuzz_two_faces/regress/unfolding-points-placed-far-
     // from-origin: 3e-4 edges at 2.7e11, positions good to 6e-5).
     const double placing = 2.0 * tol::kPositionRoundingRel *
                            std::max({o.cwiseAbs().maxCoeff(), co.cwiseAbs().maxCoeff(), s3.cwiseAbs().maxCoeff()});
@@ -1154,7 +1532,7 @@ std::string describeSoup(const TriangleSoup& soup) {
   return os.str();
 }
 
-// ===  fuzz_propagation: the exact two-face distance =============================================
+// ===  fuzz_two_faces: the exact two-face distance ===============================================
 
 /// Bit f set when the point lies in face f (by the elements it names, not by its position).
 unsigned facesOf(const TriangleSoup& soup, const SurfacePoint& p) {
@@ -1196,7 +1574,7 @@ double viaSegment(const Vec3& s, const Vec3& q, const Vec3& a, const Vec3& b) {
 
 }  // namespace
 
-Verdict checkPropagation(const PropagationCase& c, CheckDepth) {
+Verdict checkTwoFaces(const TwoFaceCase& c, CheckDepth) {
   Verdict v;
   v.interesting = true;
   auto mesh = buildMesh(c.soup, v);
@@ -1505,7 +1883,8 @@ Verdict check(const FuzzCase& c, CheckDepth depth) {
         if constexpr (std::is_same_v<T, MeshIoCase>) return checkMeshIo(x);
         else if constexpr (std::is_same_v<T, PredicateCase>) return checkPredicates(x);
         else if constexpr (std::is_same_v<T, EdgeUpdateCase>) return checkEdgeUpdate(x);
-        else if constexpr (std::is_same_v<T, PropagationCase>) return checkPropagation(x, depth);
+        else if constexpr (std::is_same_v<T, PropagationCase>) return checkPropagation(x);
+        else if constexpr (std::is_same_v<T, TwoFaceCase>) return checkTwoFaces(x, depth);
         else return checkSolver(x, depth);
       },
       c);
@@ -1651,7 +2030,30 @@ void describe(FuzzTarget t, std::span<const std::uint8_t> bytes, std::ostream& o
     for (const Interval& w : c->before) out << "before   " << describeInterval(w) << "\n";
     out << "incoming " << describeInterval(c->incoming) << "\n";
   } else if (const auto* c = std::get_if<PropagationCase>(&*decoded)) {
-    out << "# fuzz_propagation: faces B (0) and A (1) share the edge 0-1\n"
+    const Interval& w = c->window;
+    out << "# fuzz_propagation: an interval on e0 = v0v2 propagated across the face v0 v1 v2\n"
+        << "v0 " << c->face[0].transpose() << "\nv2 " << c->face[1].transpose() << "\nv1 "
+        << c->face[2].transpose() << "\n"
+        << "window " << w.b0 << " " << w.b1 << "\n"
+        << "source " << w.source.x() << " " << w.source.y() << "   # in e0's frame, y on the far side from v1\n"
+        << "sigma " << w.sigma << "\n"
+        << "e1 " << (c->e1Forward ? "v0->v1" : "v1->v0") << "\ne2 " << (c->e2Forward ? "v1->v2" : "v2->v1") << "\n";
+    const LocalWindow local = localWindowOf(*c);
+    out << "# local frame: " << describeLocal(local) << "; local scale " << localScale(local) << "\n";
+    const LocalPropagation r = propagateLocal(local);
+    out << "# propagateLocal: " << describeResult(r) << "\n";
+    const ExactFig6 e = exactFig6(local);
+    out << "# exact tree: " << (e.branch ? std::string(name(*e.branch)) : "undecided, near " + e.nearWhat) << "\n";
+    for (int i = 0; i < r.numChildren; ++i) {
+      const ChildInterval made = childIntervalOf(*c, local, r.children[i]);
+      out << "# childInterval e" << int(r.children[i].edge) << (childEdgeOf(*c, r.children[i].edge).forward ? "" : " (backward)") << ": "
+          << (made.outcome == ChildOutcome::Made ? describeInterval(made.interval)
+              : made.outcome == ChildOutcome::Empty ? std::string("empty")
+                                                    : std::string("dropped: the source is seen from outside the face"))
+          << "\n";
+    }
+  } else if (const auto* c = std::get_if<TwoFaceCase>(&*decoded)) {
+    out << "# fuzz_two_faces: faces B (0) and A (1) share the edge 0-1\n"
         << describeSoup(c->soup) << "source " << formatSurfacePoint(c->source) << "\n";
   } else if (const auto* c = std::get_if<SolverCase>(&*decoded)) {
     out << "# fuzz_solver: " << c->soup.faces.size() << " faces"
@@ -1773,7 +2175,8 @@ class SourceColours {
   std::map<std::tuple<double, double, double, int, int>, std::size_t> index_;
 };
 
-void svgPredicates(const LocalWindow& w, std::ostream& out) {
+void svgPredicates(const LocalWindow& w, std::ostream& out, const std::string& title = "fuzz_predicates",
+                   const std::string& extra = "") {
   SvgDoc doc(900, 700);
   const Vec2 v0(0, 0), v2(w.edgeLength, 0), v1 = w.apex, s = w.source;
   const double scale = localScale(w);
@@ -1811,7 +2214,8 @@ void svgPredicates(const LocalWindow& w, std::ostream& out) {
     doc.dot(P, s, 5, "#d62728");
     doc.label(P, s, "s");
   }
-  doc.labelPx(20, 20, "fuzz_predicates: " + describeResult(r), 14);
+  doc.labelPx(20, 20, title + ": " + describeResult(r), 14);
+  if (!extra.empty()) doc.labelPx(20, 695, extra, 11);
   const ExactFig6 e = exactFig6(w);
   doc.labelPx(20, 40, "L=" + shortNum(w.edgeLength) + " v1=(" + shortNum(v1.x()) + ", " + shortNum(v1.y()) +
                           ") [b0,b1]=[" + shortNum(w.b0) + ", " + shortNum(w.b1) + "] s=(" + shortNum(s.x()) +
@@ -1819,6 +2223,26 @@ void svgPredicates(const LocalWindow& w, std::ostream& out) {
                           (e.branch ? std::string(name(*e.branch)) : "near " + e.nearWhat) +
                           "  (e1 green, e2 purple)", 12);
   doc.write(out);
+}
+
+/// The face unfolded onto e0's frame with the window, its wedge and propagateLocal's ranges (as
+/// fuzz_predicates draws them), and childInterval's intervals in the footer.
+void svgPropagation(const PropagationCase& c, std::ostream& out) {
+  const LocalWindow w = localWindowOf(c);
+  const LocalPropagation r = propagateLocal(w);
+  std::ostringstream os;
+  os << std::setprecision(6) << "sigma=" << c.window.sigma << "  children:";
+  for (int i = 0; i < r.numChildren; ++i) {
+    const LocalChild& ch = r.children[i];
+    const ChildInterval made = childIntervalOf(c, w, ch);
+    os << " e" << int(ch.edge) << (childEdgeOf(c, ch.edge).forward ? "" : " (backward)") << " ";
+    if (made.outcome == ChildOutcome::Made)
+      os << "[" << made.interval.b0 << ", " << made.interval.b1 << "] s'=(" << made.interval.source.x() << ", "
+         << made.interval.source.y() << ")";
+    else
+      os << (made.outcome == ChildOutcome::Empty ? "empty" : "dropped (seen from outside)");
+  }
+  svgPredicates(w, out, "fuzz_propagation", os.str());
 }
 
 void svgEdgeUpdate(const EdgeUpdateCase& c, std::ostream& out) {
@@ -1916,7 +2340,7 @@ void svgMesh(const TriangleSoup& soup, const std::vector<Vec3>& sources, std::sp
   doc.write(out);
 }
 
-void svgPropagation(const PropagationCase& c, std::ostream& out) {
+void svgTwoFaces(const TwoFaceCase& c, std::ostream& out) {
   const auto& P3 = c.soup.positions;
   // Unfold: v0 at the origin, v2 on +x, v1 (face B) above, w (face A) below.
   const Vec3 o = P3[0], dir = (P3[1] - o).normalized();
@@ -1975,7 +2399,7 @@ void svgPropagation(const PropagationCase& c, std::ostream& out) {
     status = std::string("; the solve threw: ") + e.what();
   }
   doc.dot(G, at(c.source), 6, "#d62728");
-  doc.labelPx(20, 22, "fuzz_propagation: faces B (blue) and A (sand) unfolded, intervals and pseudo-sources by colour" + status, 13);
+  doc.labelPx(20, 22, "fuzz_two_faces: faces B (blue) and A (sand) unfolded, intervals and pseudo-sources by colour" + status, 13);
   doc.write(out);
 }
 
@@ -1993,6 +2417,7 @@ void writeSvg(FuzzTarget t, std::span<const std::uint8_t> bytes, std::ostream& o
   if (const auto* c = std::get_if<PredicateCase>(&*decoded)) return svgPredicates(c->window, out);
   if (const auto* c = std::get_if<EdgeUpdateCase>(&*decoded)) return svgEdgeUpdate(*c, out);
   if (const auto* c = std::get_if<PropagationCase>(&*decoded)) return svgPropagation(*c, out);
+  if (const auto* c = std::get_if<TwoFaceCase>(&*decoded)) return svgTwoFaces(*c, out);
   if (const auto* c = std::get_if<SolverCase>(&*decoded)) {
     std::vector<Vec3> sources;
     for (const SurfacePoint& s : c->sources) sources.push_back(surfacePointPosition(c->soup, s));

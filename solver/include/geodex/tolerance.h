@@ -160,7 +160,7 @@ inline constexpr double kRoundingRel = 1e-14;
 /// margin. The solver works with the point's parameters instead, so an oracle comparing
 /// distances between 3D positions owes this for each point it places. It matters where the mesh
 /// is small next to its distance from the origin: 1e-8-long edges at 262144 have positions good
-/// to 6e-11 only (corpus/fuzz_propagation/regress/two-face-distance-point-rounded-far-from-origin).
+/// to 6e-11 only (corpus/fuzz_two_faces/regress/two-face-distance-point-rounded-far-from-origin).
 inline constexpr double kPositionRoundingRel = 4.0 * 2.220446049250313e-16;
 
 

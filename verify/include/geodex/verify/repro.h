@@ -29,7 +29,14 @@
 //                     (InvariantChecker, full tier), no pseudo-source invented, ids unique,
 //                     every id to queue present. Also reads the text reproducers of
 //                     writeReproducer ("geodex-edge-update 1").
-//   fuzz_propagation  two faces sharing an edge (any 3-D lattice positions) and a source point →
+//   fuzz_propagation  one 3-D face (lattice positions nudged by the tolerances: needles,
+//                     zero-area faces, collinear sources are common) and one interval on its edge
+//                     v0v2 → the solver's one propagation step (propagateLocal, childInterval):
+//                     each child's distance function equals σ + the 3-D distance to the parent's
+//                     pseudo-source unfolded across v0v2; every sampled ray of the window leaves
+//                     the face inside a child; children within their edges, at most one per edge;
+//                     the branch equals the exactly evaluated Fig. 6 tree off ε-ambiguity.
+//   fuzz_two_faces    two faces sharing an edge (any 3-D lattice positions) and a source point →
 //                     a full solve with the full InvariantChecker and the unfolding check (every
 //                     propagated child's distance equals σ + the 3-D distance to its parent's
 //                     pseudo-source unfolded into the crossed face); distances at vertices, edge
@@ -65,12 +72,13 @@ namespace geodex::verify {
 
 // === Targets ===================================================================================
 
-enum class FuzzTarget : std::uint8_t { MeshIo, Predicates, EdgeUpdate, Propagation, Solver };
-inline constexpr std::array<FuzzTarget, 5> kFuzzTargets{
-    FuzzTarget::MeshIo, FuzzTarget::Predicates, FuzzTarget::EdgeUpdate, FuzzTarget::Propagation,
-    FuzzTarget::Solver};
+enum class FuzzTarget : std::uint8_t { MeshIo, Predicates, EdgeUpdate, Propagation, TwoFaces, Solver };
+inline constexpr std::array<FuzzTarget, 6> kFuzzTargets{
+    FuzzTarget::MeshIo,      FuzzTarget::Predicates, FuzzTarget::EdgeUpdate,
+    FuzzTarget::Propagation, FuzzTarget::TwoFaces,   FuzzTarget::Solver};
 
-/// "fuzz_mesh_io", "fuzz_predicates", "fuzz_edge_update", "fuzz_propagation", "fuzz_solver".
+/// "fuzz_mesh_io", "fuzz_predicates", "fuzz_edge_update", "fuzz_propagation", "fuzz_two_faces",
+/// "fuzz_solver".
 std::string_view name(FuzzTarget t);
 /// Accepts the full name or the part after "fuzz_" ("solver"); nullopt otherwise.
 std::optional<FuzzTarget> parseFuzzTarget(std::string_view s);
@@ -197,7 +205,28 @@ struct EdgeUpdateSpec {
   IntervalSpec incoming;
 };
 
-/// A source point of fuzz_propagation and fuzz_solver.
+/// fuzz_propagation: one face and one interval on its edge e0 = v0v2. The source is given in the
+/// interval's frame on e0 (x from v0, y >= 0 its height on the far side of e0 from v1).
+struct PropagationSpec {
+  std::int8_t unitExp = 0;
+  std::array<std::array<Quantity, 3>, 3> points;  ///< v0, v2, v1: coordinates ∈ [−16, 16];
+                                                  ///< nudges relative to 16 lattice units
+  Quantity b0, b1;  ///< along e0 in 16ths of its length L: ∈ [0, 16], swapped if reversed,
+                    ///< clamped to [0, L]; nudges relative to L
+  /// mod 3: 0 the source at (sourceX, sourceY); 1 (2) on the line from v1 through b0 (b1),
+  /// beyond it: at b + λ (b − v1) with λ = sourceX / 8, then moved by sourceY across that line
+  /// (G2–G5 in any face, not only in axis-aligned ones).
+  std::uint8_t sourceMode = 0;
+  Quantity sourceX;  ///< mode 0: x ∈ [−64, 80]; modes 1, 2: λ × 8 ∈ [0, 64] (|·| taken)
+  Quantity sourceY;  ///< mode 0: y ∈ [0, 64] (|y| taken); modes 1, 2: an offset ∈ [−16, 16]
+  Quantity sigma;    ///< σ ∈ [0, 64] (|σ| taken)
+  /// bit 0: the mesh edge e1 runs v1 → v0; bit 1: e2 runs v2 → v1 (a child edge may run either
+  /// way in a mesh, and the child interval is then mirrored along it).
+  std::uint8_t childDirections = 0;
+  // Nudges of b0, b1 are relative to L; of the source and σ to 16 lattice units.
+};
+
+/// A source point of fuzz_two_faces and fuzz_solver.
 struct SourceSpec {
   std::uint8_t kind = 0;     ///< mod 3: vertex, edge point, face point
   std::uint8_t element = 0;  ///< vertex: index mod #V (an unreferenced one moves to a face's
@@ -208,9 +237,9 @@ struct SourceSpec {
                              ///< (reflected when a + b > 1)
 };
 
-/// fuzz_propagation: faces B = (v0, v1, v2) and A = (v0, v2, w) sharing the edge v0v2; windows
+/// fuzz_two_faces: faces B = (v0, v1, v2) and A = (v0, v2, w) sharing the edge v0v2; windows
 /// from the source cross into the other face.
-struct PropagationSpec {
+struct TwoFaceSpec {
   std::int8_t unitExp = 0;
   std::array<std::array<Quantity, 3>, 4> points;  ///< v0, v2, v1, w: coordinates ∈ [−16, 16]
   std::uint8_t winding = 0;  ///< bit 0 flips B, bit 1 flips A
@@ -245,6 +274,7 @@ struct SolverSpec {
 std::vector<std::uint8_t> encode(const PredicateSpec& s);
 std::vector<std::uint8_t> encode(const EdgeUpdateSpec& s);
 std::vector<std::uint8_t> encode(const PropagationSpec& s);
+std::vector<std::uint8_t> encode(const TwoFaceSpec& s);
 std::vector<std::uint8_t> encode(const SolverSpec& s);
 
 // === Cases: decoded inputs =====================================================================
@@ -263,6 +293,18 @@ struct EdgeUpdateCase {
   std::string note;              ///< where it came from (a text reproducer's invariant, branch)
 };
 struct PropagationCase {
+  std::array<Vec3, 3> face;  ///< v0, v2, v1: the window's edge e0 = v0v2 and the apex
+  /// On e0 (x from v0): b0 < b1 within [0, |v0v2|], the pseudo-source with y >= 0 on the far
+  /// side of e0 from v1, σ >= 0.
+  Interval window;
+  bool e1Forward = true;  ///< the mesh edge e1 runs v0 → v1 (else v1 → v0)
+  bool e2Forward = true;  ///< the mesh edge e2 runs v1 → v2 (else v2 → v1)
+};
+/// The LocalWindow GeodesicSolver::propagate builds for the case: e0's frame from the 3-D
+/// positions as Mesh builds a face frame, the source reflected below e0.
+LocalWindow localWindowOf(const PropagationCase& c);
+
+struct TwoFaceCase {
   TriangleSoup soup;  ///< vertices v0, v2, v1, w; face 0 = B, face 1 = A
   SurfacePoint source;
 };
@@ -275,7 +317,7 @@ struct SolverCase {
   bool rectangle = false;  ///< … and without removed cells: convex, distances are Euclidean
 };
 using FuzzCase =
-    std::variant<MeshIoCase, PredicateCase, EdgeUpdateCase, PropagationCase, SolverCase>;
+    std::variant<MeshIoCase, PredicateCase, EdgeUpdateCase, PropagationCase, TwoFaceCase, SolverCase>;
 
 /// The case the bytes describe, or nullopt when the target skips them (too long, or a shape the
 /// target does not test: a degenerate range, a mesh the validator refuses, an invalid old list).
@@ -318,7 +360,8 @@ Verdict check(const FuzzCase& c, CheckDepth depth);
 Verdict checkMeshIo(const MeshIoCase& c);
 Verdict checkPredicates(const PredicateCase& c);
 Verdict checkEdgeUpdate(const EdgeUpdateCase& c);
-Verdict checkPropagation(const PropagationCase& c, CheckDepth depth);
+Verdict checkPropagation(const PropagationCase& c);
+Verdict checkTwoFaces(const TwoFaceCase& c, CheckDepth depth);
 Verdict checkSolver(const SolverCase& c, CheckDepth depth);
 
 /// decode + check. Skipped bytes give an uninteresting passing verdict.
@@ -342,8 +385,9 @@ void describe(FuzzTarget t, std::span<const std::uint8_t> bytes, std::ostream& o
 /// Draws the case as a plain SVG: predicates — the unfolded face, e0, the window, the wedge from
 /// s and the children on e1/e2; edge updates — the pseudo-sources and the distance functions of
 /// the list before, the incoming interval and the list after, coloured by pseudo-source;
-/// propagation — both faces unfolded into one plane, the source and the intervals after the
-/// solve, coloured by pseudo-source; solver and mesh files — the mesh projected onto its two
+/// propagation — the face and the source unfolded into one plane, the window, its wedge and the
+/// child intervals; two faces — both faces unfolded into one plane, the source and the intervals
+/// after the solve, coloured by pseudo-source; solver and mesh files — the mesh projected onto its two
 /// widest axes with sources and vertex distances.
 void writeSvg(FuzzTarget t, std::span<const std::uint8_t> bytes, std::ostream& out);
 
