@@ -75,14 +75,20 @@ LocalPropagation passThroughZeroAreaFace(const LocalWindow& w) {
 // Where the ray from s through q, beyond q, crosses the line of segment a→b: the parameter t on
 // the segment if that crossing is on it, else no value. (rayHitsSegment clamps; this is for the
 // extra child of an ambiguous branch, where a crossing off the segment means no child.)
+// Measured from q, not from s: the same line, but q − a is a face-sized vector where s − a is as
+// long as the source is far, and its cross product with the ray then cancels down to rounding.
+// From s, a window end 6.4e-10 from v0 seen from 2.9e7 away (below the ulp of the ray's
+// direction) crossed e1 exactly at q, not beyond it, and the G2 needle's e1 — which every ray
+// of the window crosses — got nothing (corpus/fuzz_propagation/regress/coverage-G2-needle-e1-
+// lost-window-end-below-far-source-resolution).
 std::optional<double> forwardHit(const Vec2& s, const Vec2& q, const Vec2& a, const Vec2& b) {
   const Vec2 d = q - s;
   const Vec2 e = b - a;
   const double denom = pred::cross(e, d);
   if (denom == 0.0) return std::nullopt;
-  const double t = pred::cross(s - a, d) / denom;
-  const double lambda = pred::cross(s - a, e) / denom;  // s + lambda·d on the line; q is at 1
-  if (!(lambda > 1.0) || !(t >= 0.0 && t <= 1.0)) return std::nullopt;
+  const double t = pred::cross(q - a, d) / denom;
+  const double beyond = pred::cross(q - a, e) / denom;  // q + beyond·d is on the line
+  if (!(beyond > 0.0) || !(t >= 0.0 && t <= 1.0)) return std::nullopt;
   return t;
 }
 

@@ -157,6 +157,27 @@ TEST(Fig6, DecisionsAreScaleInvariant) {
   }
 }
 
+// ===  Far sources and long edges: crossings measured near the face ==============================
+
+TEST(Fig6Regression, G2NeedleSeenFromFarKeepsE1WhenTheWindowEndIsBelowTheRaysResolution) {
+  // corpus/fuzz_propagation/regress/coverage-G2-needle-e1-lost-window-end-below-far-source-
+  // resolution: a needle (apex 1e-10 above e0, 15 along) and a window [6.4e-10, 1] seen from
+  // 2.9e7 away, 2.06e-4 below e0. The rays rise at 2.06e-4 / 2.89e7 = 7.143e-12, e1 at
+  // 1e-10 / 15 = 6.667e-12, so the ray through b0 crosses e1 where 7.143e-12 (x − 6.4e-10) =
+  // 6.667e-12 x: x = 9.6e-9, t = x / 15 = 6.4e-10; every ray of the window crosses e1. Fig. 6
+  // calls s, b0, v1 collinear (G2), and e1 gets the crossing on from there. Measured from s, the
+  // crossing came out exactly at b0 (6.4e-10 is below the ulp of the ray's direction), not
+  // beyond it, and e1 got nothing.
+  const LocalWindow w{2.0, Vec2(15.000000000449999, 1e-10), 6.3999999999999996e-10, 1.0,
+                      Vec2(-28901375.000928972, -0.00020644479999999999)};
+  const LocalPropagation r = propagateLocal(w);
+  EXPECT_EQ(r.branch, Fig6Branch::G2);
+  ASSERT_EQ(r.numChildren, 1);
+  EXPECT_EQ(r.children[0].edge, 1);
+  EXPECT_NEAR(r.children[0].t0, 6.4e-10, 0.1e-10);
+  EXPECT_EQ(r.children[0].t1, 1.0);
+}
+
 // ===  childInterval: a LocalChild on its mesh edge ================================================
 // The face v0 = (0,0), v2 = (2,0), v1 = (1,1) and the source s = (1,-1) below e0 unless said
 // otherwise; e1 and e2 are √2 long. Expected ranges and sources are worked out by hand in the
