@@ -178,6 +178,25 @@ TEST(Fig6Regression, G2NeedleSeenFromFarKeepsE1WhenTheWindowEndIsBelowTheRaysRes
   EXPECT_EQ(r.children[0].t1, 1.0);
 }
 
+TEST(Fig6Regression, CrossingNearTheNearEndOfALongEdgeIsMeasuredFromThatEnd) {
+  // corpus/fuzz_propagation/regress/coverage-crossing-near-v2-of-a-long-edge-measured-from-its-
+  // far-end: e0 is 2.83e-10 long, the apex 6.7e7 away at almost 45°, and the whole-edge window is
+  // seen from s = (−18.38478, −18.38477), also at almost 45°. The rays pass right of v1 onto e2
+  // (Fig. 3a), meeting it at an angle of 45° − 3.235e-7 − (45° − 5.96e-8) = 2.64e-7 rad: the ray
+  // through v0, 2.83e-10 × sin 45° = 2e-10 off e2's line at v2, meets it 2e-10 / 2.64e-7 =
+  // 7.6e-4 from v2, t = 1 − 7.6e-4 / 6.71e7 = 1 − 1.13e-11. Measured from v1, 6.7e7 away, the
+  // crossing was 0.03 off, past v2, and the child was empty.
+  const double L = 2.8284271247461901e-10;
+  const LocalWindow w{L, Vec2(47453135.640552901, 47453129.983698659), 0.0, L,
+                      Vec2(-18.384782262420785, -18.384770366690944)};
+  const LocalPropagation r = propagateLocal(w);
+  EXPECT_EQ(r.branch, Fig6Branch::LeftOfWedge);
+  ASSERT_EQ(r.numChildren, 1);
+  EXPECT_EQ(r.children[0].edge, 2);
+  EXPECT_NEAR(1.0 - r.children[0].t0, 1.13e-11, 0.02e-11);
+  EXPECT_EQ(r.children[0].t1, 1.0);
+}
+
 // ===  childInterval: a LocalChild on its mesh edge ================================================
 // The face v0 = (0,0), v2 = (2,0), v1 = (1,1) and the source s = (1,-1) below e0 unless said
 // otherwise; e1 and e2 are √2 long. Expected ranges and sources are worked out by hand in the

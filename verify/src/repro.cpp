@@ -975,24 +975,38 @@ struct Exit {
   Vec2 point{0.0, 0.0};
 };
 
-/// Where the ray from s through p (p on e0, s below it) leaves the face v0 v1 v2.
+/// Where the ray from s through p (p on e0, s below it) leaves the face v0 v1 v2. Measured from p
+/// (not s) and from the segment's end nearer the crossing: from s, or from the far end of a long
+/// edge, the cross products cancel down to the rounding of those long vectors. Computed from v1,
+/// a crossing near v2 on a 6.7e7-long e2 was 0.03 off, and the coverage check asked a window to
+/// cover a stretch of e2 its rays never reach (corpus/fuzz_propagation/regress/coverage-crossing-
+/// near-v2-of-a-long-edge-measured-from-its-far-end).
 Exit exitOf(const Vec2& s, const Vec2& p, const Vec2& v0, const Vec2& v1, const Vec2& v2) {
   const Vec2 d = p - s;
   Exit best;
-  double bestLambda = -INFINITY;
+  double bestBeyond = -INFINITY;
   const Vec2 A[2] = {v0, v1}, B[2] = {v1, v2};
   for (int k = 0; k < 2; ++k) {
     const Vec2 e = B[k] - A[k];
     const double denom = cross2(e, d);
     if (denom == 0.0) continue;
-    const double t = cross2(s - A[k], d) / denom;
-    const double lambda = cross2(A[k] - s, e) / cross2(d, e);
-    if (!(t >= -1e-9 && t <= 1.0 + 1e-9)) continue;
-    if (lambda > bestLambda) {
-      bestLambda = lambda;
+    double t = cross2(p - A[k], d) / denom;
+    const double beyond = cross2(p - A[k], e) / denom;  // p + beyond·d is on the line
+    Vec2 point;
+    if (t <= 0.5) {
+      if (!(t >= -1e-9)) continue;
+      point = A[k] + std::max(t, 0.0) * e;
+    } else {  // from B: t = 1 − tB
+      const double tB = cross2(p - B[k], d) / cross2(A[k] - B[k], d);
+      if (!(tB >= -1e-9)) continue;
+      t = 1.0 - tB;
+      point = B[k] + std::max(tB, 0.0) * (A[k] - B[k]);
+    }
+    if (beyond > bestBeyond) {
+      bestBeyond = beyond;
       best.edge = k + 1;
       best.t = std::clamp(t, 0.0, 1.0);
-      best.point = A[k] + best.t * e;
+      best.point = point;
     }
   }
   return best;
