@@ -214,8 +214,7 @@ ChildInterval childInterval(const LocalWindow& w, const LocalChild& c, const Chi
   const Vec2 origin = e.forward ? A : B;
   const Vec2 dir = (e.forward ? B - A : A - B).normalized();
   const Vec2 rel = w.source - origin;
-  const double h = pred::cross(dir, rel);
-  const double interior = pred::cross(dir, (onE1 ? v2 : v0) - origin);
+  const double h = pred::cross(dir, rel);  // > 0: the source is left of the directed child edge
 
   ChildInterval r;
   Interval& n = r.interval;
@@ -233,7 +232,13 @@ ChildInterval childInterval(const LocalWindow& w, const LocalChild& c, const Chi
   // itself; this stays as the safety net for any other ε-decision that names an edge the wedge
   // cannot reach. Through a zero-area face "across" has no meaning: the source's distance from
   // the common line is its height.
-  const double inward = interior > 0 ? h : -h;
+  // The face lies right of e1 (v0→v1) and of e2 (v1→v2): v1 is above e0, so v0, v1, v2 turn
+  // clockwise. Taken from the edge's direction, not from a cross product with the third vertex:
+  // for a needle seen from its far end that cross product is below its own rounding, and a
+  // backward e1 from an apex 2.9e6 away found v2 (1.6e-10 off its line) on the wrong side and
+  // dropped the only child of a source 8 inside the face (corpus/fuzz_propagation/regress/
+  // coverage-child-dropped-interior-side-of-backward-e1-taken-from-far-apex).
+  const double inward = e.forward ? -h : h;
   if (!oneLine && inward < 0.0 &&
       -inward > std::max(tol::kCoincideRel * localScale(w), tol::kCollinearSin * rel.norm())) {
     r.outcome = ChildOutcome::SeenFromOutside;

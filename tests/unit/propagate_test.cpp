@@ -302,6 +302,22 @@ TEST(ChildInterval, SourceARoundingErrorAcrossIsPutOnTheLine) {
   EXPECT_NEAR(c.interval.source.x(), -kRoot2, 1e-15);
 }
 
+TEST(ChildInterval, InteriorSideComesFromTheEdgesDirectionNotFromTheFarApex) {
+  // corpus/fuzz_propagation/regress/coverage-child-dropped-interior-side-of-backward-e1-taken-
+  // from-far-apex: e0 is 1.9e-10 long, the apex 2.9e6 away, and the source 9.2e7 away almost on
+  // e1's line behind v0. Measured at v0 (the near end), s lies (a × s)/|a| = −8.0 from e1's line,
+  // a = v1: on the right, v2's side (v2 is −1.6e-10 from it), inside the face. On the mesh edge
+  // running v1 → v0 the child keeps the source 8 from its line; the side of v2 taken as a cross
+  // product from v1, 2.9e6 away, was below its rounding, came out on the left, and the child
+  // was dropped as seen from outside.
+  const double L = 1.8867962264113207e-10;
+  const Vec2 apex(-1528296.4634101295, 2445274.341480948);
+  const LocalWindow w{L, apex, 0.0, L, Vec2(48905493.613110587, -78248774.687398821)};
+  const ChildInterval c = childInterval(w, {1, 0.0, 6.3999996489392092e-10}, {apex.norm(), false}, false);
+  ASSERT_EQ(c.outcome, ChildOutcome::Made);
+  EXPECT_NEAR(c.interval.source.y(), 8.0, 1e-6);
+}
+
 TEST(ChildInterval, EmptyRangeMakesNothing) {
   const LocalWindow w = window(0.5, 1.5, Vec2(1.0, -1.0));
   EXPECT_EQ(childInterval(w, {2, 0.5, 0.5}, {kRoot2, true}, false).outcome, ChildOutcome::Empty);

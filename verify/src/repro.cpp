@@ -1201,9 +1201,9 @@ struct PlaneCoordinates {
 };
 
 /// The mesh edge a child of the case lands on (e1: v0v1, e2: v1v2), from its vertex[0] to its
-/// vertex[1] as the case's directions say, and the face's third vertex.
+/// vertex[1] as the case's directions say.
 struct CaseChildEdge {
-  Vec3 from, to, opposite;
+  Vec3 from, to;
   double length;  ///< |to − from|, as Mesh computes an edge's length
   bool forward;
 };
@@ -1213,7 +1213,7 @@ CaseChildEdge childEdgeOf(const PropagationCase& c, int edge) {
   const bool forward = onE1 ? c.e1Forward : c.e2Forward;
   const Vec3& segmentStart = onE1 ? v0 : v1;
   const Vec3& segmentEnd = onE1 ? v1 : v2;
-  CaseChildEdge e{forward ? segmentStart : segmentEnd, forward ? segmentEnd : segmentStart, onE1 ? v2 : v0, 0.0, forward};
+  CaseChildEdge e{forward ? segmentStart : segmentEnd, forward ? segmentEnd : segmentStart, 0.0, forward};
   e.length = (e.to - e.from).norm();
   return e;
 }
@@ -1304,9 +1304,13 @@ Verdict checkPropagation(const PropagationCase& c) {
     // on the wrong side of the child edge's line (rounding, says childInterval) is put on the
     // line, which lowers the child's distances by at most its height there, `acrossLine`.
     const Vec3 fromV0 = e.from - c.face[0];
-    const Vec2 Q0 = plane(fromV0), Q1 = plane(e.to - c.face[0]), Qo = plane(e.opposite - c.face[0]), S(sx, -sy);
+    const Vec2 Q0 = plane(fromV0), Q1 = plane(e.to - c.face[0]), S(sx, -sy);
     const Vec2 u = (Q1 - Q0).normalized();
-    const double towardsFace = pred::cross(u, Qo - Q0) > 0.0 ? 1.0 : -1.0;
+    // The face lies right of e1 (v0→v1) and e2 (v1→v2), both as Q1 − Q0 when forward: in these
+    // coordinates v0 = (0, 0), v2 = (L, 0) and v1 has b >= 0, a clockwise turn. (Not the side of
+    // the third vertex: for a needle seen from its far end that cross product is below its
+    // rounding.)
+    const double towardsFace = e.forward ? -1.0 : 1.0;
     const double acrossLine = std::max(0.0, -towardsFace * pred::cross(u, S - Q0));
     const double tolerance = tol::kRoundingRel * (sigma + Vec2(sx, sy).norm() + localScale(w)) + acrossLine;
     const Vec3 edgeDir = (e.to - e.from) / length;
