@@ -450,13 +450,13 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
       //     neighbour's value, which is all step 4 promises). The edge's ends count as neighbours.
       if (m > 0) {
         Interval& front = L[0];
-        if (atFront && front.b0 > 0.0 && front.b0 < tinyLength(front, edgeLength)) {
+        if (atFront && front.b0 > 0.0 && front.b0 < sewLength(front, edgeLength)) {
           ++report.degeneracies[DegeneracyKind::D3];
           if (!front.pending()) grewUnpropagated(front);
           setRange(front, 0.0, front.b1);
         }
         Interval& back = L[m - 1];
-        if (atBack && back.b1 < edgeLength && edgeLength - back.b1 < tinyLength(back, edgeLength)) {
+        if (atBack && back.b1 < edgeLength && edgeLength - back.b1 < sewLength(back, edgeLength)) {
           ++report.degeneracies[DegeneracyKind::D3];
           if (!back.pending()) grewUnpropagated(back);
           setRange(back, back.b0, edgeLength);
@@ -468,9 +468,9 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
           if (gap == 0.0) continue;
           const double tiny = std::max(tinyLength(p, edgeLength), tinyLength(q, edgeLength));
           if (gap > 0.0) {
-            // (A flat vertex's shadow, kFlatVertexAngle × the rays' length, is below ε here;
+            // (A flat vertex's shadow, kFlatVertexAngle × the rays' length, is below sewLength;
             // wider shadows are closed when the wavefront has passed: tol::kShadowSewRel.)
-            if (gap >= tiny) continue;
+            if (gap >= std::max(sewLength(p, edgeLength), sewLength(q, edgeLength))) continue;
             ++report.degeneracies[DegeneracyKind::D3];
             if (p.pending() && !q.pending()) {
               setRange(p, p.b0, q.b0);

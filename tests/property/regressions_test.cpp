@@ -382,5 +382,17 @@ TEST(SolverRegression, ASliverAtAFarWindowsRoundedEndIsRemoved) {
   expectCheckedSolveAgreesAtVertex("rotated-far-source-patch-sliver-at-a-rounded-window-end.off", "v:25", 7);
 }
 
+// Found by the fourth 30-minute scripts/properties-long.sh run on 2026-11-22 (pass 29, in
+// Metamorphic.CoplanarRefinementLeavesDistancesUnchanged): the same shadow as
+// FarSourceWindowStopsShortOfAConvexVertex with the windows arriving the other way round
+// (tests/data/regression/far-source-sewn-over-a-saddle-shadow.off). The far window came first and
+// stopped 1.53e-7 short of the flat vertex 17; step 4 sewed that gap with its whole ε (1e-11 × its
+// source distance, 1.76e-6), and vertex 1's window, arriving next, lost over it by rounding: no
+// fan into face 17-5-0, and edge 0-5 gave 0.41 more than D(5). Step 4 now sews a gap beside a
+// window only up to sewLength: the edge's ε plus the window's ray-end precision.
+TEST(SolverRegression, AFarWindowIsNotSewnOverASaddlesShadow) {
+  expectCheckedSolveAgreesAtVertex("far-source-sewn-over-a-saddle-shadow.off", "v:16", 5);
+}
+
 }  // namespace
 }  // namespace geodex::proptest

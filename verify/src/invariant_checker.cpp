@@ -118,15 +118,15 @@ std::string InvariantChecker::checkList(std::span<const Interval> list, double L
       why = os.str();
       return "no-overlap";
     }
-    // A gap is step 4's when below the ε of the two intervals beside it.
-    if (w.b0 > p.b1 && w.b0 - p.b1 < std::max(tinyLength(w, L), tinyLength(p, L))) {
+    // A gap is step 4's when below the sewing length of the two intervals beside it.
+    if (w.b0 > p.b1 && w.b0 - p.b1 < std::max(sewLength(w, L), sewLength(p, L))) {
       os << "gap of " << w.b0 - p.b1 << " < epsilon between intervals " << i - 1 << " and " << i << " left unsewn";
       why = os.str();
       return "no-tiny-gap";
     }
   }
-  if (!list.empty() && ((list.front().b0 > 0.0 && list.front().b0 < tinyLength(list.front(), L)) ||
-                        (list.back().b1 < L && L - list.back().b1 < tinyLength(list.back(), L)))) {
+  if (!list.empty() && ((list.front().b0 > 0.0 && list.front().b0 < sewLength(list.front(), L)) ||
+                        (list.back().b1 < L && L - list.back().b1 < sewLength(list.back(), L)))) {
     why = "gap below epsilon left unsewn at an end of the edge";
     return "no-tiny-gap";
   }

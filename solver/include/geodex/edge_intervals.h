@@ -59,6 +59,17 @@ inline double tinyLength(const Interval& w, double edgeLength) {
   return tol::kTinyIntervalRel * intervalLengthScale(w, edgeLength);
 }
 
+/// D3: a gap beside w shorter than this is sewn (step 4): ε of the edge itself (kTinyIntervalRel ×
+/// its length: a flat vertex's shadow, kFlatVertexAngle × the rays' length past the vertex, is
+/// below it) plus how far w's ray-cast end may be off (kRayEndRel × w's scale). Not w's whole ε:
+/// for a window from far away that is 1e5× its rounding, and a gap that wide at its end can be
+/// the start of a near saddle's shadow; sewn, the far window reached over it and the saddle's own
+/// window, arriving later, lost there by rounding and never fanned out into the shadow
+/// (tests/data/regression/far-source-sewn-over-a-saddle-shadow.off: 0.41 too much downstream).
+inline double sewLength(const Interval& w, double edgeLength) {
+  return tol::kTinyIntervalRel * edgeLength + tol::kRayEndRel * intervalLengthScale(w, edgeLength);
+}
+
 /// How far a neighbour's ray-cast end may be off, for step 3's D1 test (tol::kRayEndRel).
 inline double rayEndPrecision(const Interval& w, double edgeLength) {
   return tol::kRayEndRel * intervalLengthScale(w, edgeLength);

@@ -26,12 +26,14 @@ inline constexpr double kFlatFaceRel = 1e-12;
 // ===  Geodesic discontinuities (Sect. 3.2 and 4.2, Algorithm 2 steps 3–5) =====================
 
 /// D1: intervals shorter than this × their length scale are removed (merged into a neighbour).
-/// D3: gaps shorter than this × the neighbours' length scale are sewn. (That covers a flat
-///     vertex's shadow, kFlatVertexAngle × the rays' length from their unfolded source, which is
-///     at most about twice the length scale; σ does not count: a shadow widens along the rays,
-///     however far their pseudo-source is from the real source. Sewing up to kFlatVertexAngle ×
+/// D3: gaps shorter than this × the edge length, plus kRayEndRel × the neighbours' length scale,
+///     are sewn (sewLength in edge_intervals.h). That covers a flat vertex's shadow: the two
+///     sides' boundary rays both pass through the vertex and differ in direction by its angle
+///     defect (below kFlatVertexAngle), so the gap is that × the distance past the vertex, a
+///     local length. Neither σ nor the source's distance counts: sewing up to kFlatVertexAngle ×
 ///     σ + the rays' length once gave a window a stretch 0.0094 long on an edge 7.9e6 from its
-///     source with σ = 3.2e12, where the neighbour was 1.6e6 shorter: fuzz_edge_update.)
+///     source with σ = 3.2e12, where the neighbour was 1.6e6 shorter (fuzz_edge_update), and
+///     sewing up to this × a far source's distance closed a near saddle's shadow (sewLength).
 /// The length scale of an interval is max(edge length, distance from its pseudo-source to the
 /// edge): its ends come from rays cast from that source, so they carry rounding of ~1e-16 × that
 /// distance. (A window from a source 1e5 edge lengths away has ends good to ~1e-11 × the edge
