@@ -449,14 +449,20 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
       //     propagated side need not be propagated again (either way each point of the gap takes a
       //     neighbour's value, which is all step 4 promises). The edge's ends count as neighbours.
       if (m > 0) {
+        // On an edge shorter than a window's own ε, its ends mean nothing at the precision of its
+        // source: step 3 kept it as the edge's last window (lastOnShortEdge), and it covers the
+        // edge to both ends (a window from 4.4e12 away left at [1, 5] of a 6-long edge:
+        // corpus/fuzz_edge_update/regress/no-tiny-interval-short-edge-window-not-sewn-to-its-ends).
+        auto shortEdgeFor = [&](const Interval& w) { return edgeLength < tinyLength(w, edgeLength); };
         Interval& front = L[0];
-        if (atFront && front.b0 > 0.0 && front.b0 < sewLength(front, edgeLength)) {
+        if (atFront && front.b0 > 0.0 && (front.b0 < sewLength(front, edgeLength) || shortEdgeFor(front))) {
           ++report.degeneracies[DegeneracyKind::D3];
           if (!front.pending()) grewUnpropagated(front);
           setRange(front, 0.0, front.b1);
         }
         Interval& back = L[m - 1];
-        if (atBack && back.b1 < edgeLength && edgeLength - back.b1 < sewLength(back, edgeLength)) {
+        if (atBack && back.b1 < edgeLength &&
+            (edgeLength - back.b1 < sewLength(back, edgeLength) || shortEdgeFor(back))) {
           ++report.degeneracies[DegeneracyKind::D3];
           if (!back.pending()) grewUnpropagated(back);
           setRange(back, back.b0, edgeLength);

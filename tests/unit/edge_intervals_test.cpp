@@ -309,6 +309,21 @@ TEST(Algorithm2, AnEdgeShorterThanEpsilonKeepsItsLastInterval) {
   EXPECT_DOUBLE_EQ(list.distanceAt(L), near.distanceAt(L));
 }
 
+TEST(Algorithm2, AWindowAloneOnAnEdgeShorterThanItsEpsilonCoversTheEdge) {
+  // Regression (corpus/fuzz_edge_update/regress/no-tiny-interval-short-edge-window-not-sewn-to-
+  // its-ends): a window from 4.4e12 away has ε = 44 on a 6-long edge. Step 3 keeps it as the
+  // edge's last window; step 4 must then stretch it to both ends, although the gaps of 1 beside
+  // it are wider than its ray-end precision (0.044), which is all step 4 sews beside a window.
+  const double L = 6.0;
+  EdgeIntervals list;
+  EdgeUpdateReport report;
+  std::vector<Interval> scratch;
+  list.insert(make(1.0, 5.0, Vec2(4.0, 4444444444444.0), 0.0), L, report, scratch);
+  ASSERT_EQ(list.intervals().size(), 1u);
+  EXPECT_EQ(list.intervals()[0].b0, 0.0);
+  EXPECT_EQ(list.intervals()[0].b1, L);
+}
+
 TEST(Algorithm2, D3TinyGapIsSewnAtTheMidpoint) {
   Edge1 e;
   e.insert(make(0.0, 5.0, Vec2(2.0, 1.0), 0.0));
