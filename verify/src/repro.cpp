@@ -1723,7 +1723,24 @@ Verdict checkSolver(const SolverCase& c, CheckDepth depth) {
   // than kRel × the distances (regress/{euclidean-lower,upper}-bound-source-placed-*).
   double largestCoordinate = 0.0;
   for (const Vec3& x : soup.positions) largestCoordinate = std::max(largestCoordinate, x.cwiseAbs().maxCoeff());
-  const double placing = 2.0 * tol::kPositionRoundingRel * largestCoordinate;
+  double placing = 2.0 * tol::kPositionRoundingRel * largestCoordinate;
+  // The solver takes a source within tol::kSnapParam of its face's barycentric range of a vertex
+  // or an edge as on it (surface_point.cpp, resolve): that moves it by at most kSnapParam × its
+  // face's longest edge, the contract kSnapParam documents. A face source with a barycentric
+  // 1.5e-11 was solved on the edge, 2.5e-10 away, and a vertex 4.1e-9 from it came out 6.8e-11
+  // below the straight line (corpus/fuzz_solver/regress/euclidean-lower-bound-face-source-snapped-
+  // to-its-edge).
+  for (const SurfacePoint& src : c.sources) {
+    double longest = 0.0;
+    if (src.kind == SurfacePoint::Kind::Edge) {
+      longest = (soup.positions[src.vertex] - soup.positions[src.toVertex]).norm();
+    } else if (src.kind == SurfacePoint::Kind::Face) {
+      const auto& f = soup.faces[src.face];
+      for (int k = 0; k < 3; ++k)
+        longest = std::max(longest, (soup.positions[f[k]] - soup.positions[f[(k + 1) % 3]]).norm());
+    }
+    placing = std::max(placing, 2.0 * tol::kPositionRoundingRel * largestCoordinate + tol::kSnapParam * longest);
+  }
   if (!report("euclidean-lower-bound", checkEuclideanLowerBound(d, euclid, kRel, placing))) return v;
   if (!report("upper-bound", checkUpperBound(d, edgeGraphDijkstra(mesh, c.sources), kRel, placing))) return v;
   if (!report("lipschitz", checkLipschitz(mesh, d, kRel))) return v;
