@@ -373,6 +373,11 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
 
     // Steps 3 and 4 repeat while step 4 changes anything: an interval that grows over a sewn gap
     // can come to touch a coarser neighbour and be a D1 sliver next to it (fuzz_edge_update).
+    // (Until 2026-11-22 nothing set `sewn`, and they ran once: a window from 4.4e12 away on a
+    // 6-long edge, sewn to a near window, stayed beside it shorter than its ε:
+    // corpus/fuzz_edge_update/regress/no-tiny-interval-short-edge-window-not-sewn-to-a-near-
+    // neighbour.) Each pass sews or resolves what it finds for good, and step 3 only removes, so
+    // this ends.
     for (bool sewn = true; sewn;) {
       sewn = false;
       // --- Step 3: remove tiny intervals (D1), merging each into a neighbour that touches it. A
@@ -449,23 +454,19 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
       //     propagated side need not be propagated again (either way each point of the gap takes a
       //     neighbour's value, which is all step 4 promises). The edge's ends count as neighbours.
       if (m > 0) {
-        // On an edge shorter than a window's own ε, its ends mean nothing at the precision of its
-        // source: step 3 kept it as the edge's last window (lastOnShortEdge), and it covers the
-        // edge to both ends (a window from 4.4e12 away left at [1, 5] of a 6-long edge:
-        // corpus/fuzz_edge_update/regress/no-tiny-interval-short-edge-window-not-sewn-to-its-ends).
-        auto shortEdgeFor = [&](const Interval& w) { return edgeLength < tinyLength(w, edgeLength); };
         Interval& front = L[0];
-        if (atFront && front.b0 > 0.0 && (front.b0 < sewLength(front, edgeLength) || shortEdgeFor(front))) {
+        if (atFront && front.b0 > 0.0 && front.b0 < sewLength(front, edgeLength)) {
           ++report.degeneracies[DegeneracyKind::D3];
           if (!front.pending()) grewUnpropagated(front);
           setRange(front, 0.0, front.b1);
+          sewn = true;
         }
         Interval& back = L[m - 1];
-        if (atBack && back.b1 < edgeLength &&
-            (edgeLength - back.b1 < sewLength(back, edgeLength) || shortEdgeFor(back))) {
+        if (atBack && back.b1 < edgeLength && edgeLength - back.b1 < sewLength(back, edgeLength)) {
           ++report.degeneracies[DegeneracyKind::D3];
           if (!back.pending()) grewUnpropagated(back);
           setRange(back, back.b0, edgeLength);
+          sewn = true;
         }
         for (std::size_t k = 0; k + 1 < m; ++k) {
           Interval& p = L[k];
@@ -478,6 +479,7 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
             // wider shadows are closed when the wavefront has passed: tol::kShadowSewRel.)
             if (gap >= std::max(sewLength(p, edgeLength), sewLength(q, edgeLength))) continue;
             ++report.degeneracies[DegeneracyKind::D3];
+            sewn = true;
             if (p.pending() && !q.pending()) {
               setRange(p, p.b0, q.b0);
             } else if (q.pending() && !p.pending()) {
@@ -492,6 +494,7 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
           } else {
             if (gap <= -tiny) continue;
             ++report.degeneracies[DegeneracyKind::D2];
+            sewn = true;
             const double meet = overlapMeetingPoint(p, q, q.b0, p.b1, edgeLength);
             setRange(p, p.b0, meet);
             setRange(q, meet, q.b1);

@@ -324,6 +324,25 @@ TEST(Algorithm2, AWindowAloneOnAnEdgeShorterThanItsEpsilonCoversTheEdge) {
   EXPECT_EQ(list.intervals()[0].b1, L);
 }
 
+TEST(Algorithm2, AFarWindowOnAnEdgeShorterThanItsEpsilonGivesWayToANearNeighbour) {
+  // Regression (corpus/fuzz_edge_update/regress/no-tiny-interval-short-edge-window-not-sewn-to-a-
+  // near-neighbour): the window of the test above arrives beside a near window at [0, 0.5]. Step 4
+  // sews the gap between them at its midpoint; the far window, now touching the near one and
+  // shorter than its own ε, must then go (step 3 again), leaving the near window on the whole
+  // edge. Steps 3 and 4 ran only once, and the far window stayed at [0.75, 6].
+  const double L = 6.0;
+  EdgeIntervals list;
+  EdgeUpdateReport report;
+  std::vector<Interval> scratch;
+  const Interval near = make(0.0, 0.5, Vec2(0.0, 0.0), 0.0);
+  list.insert(near, L, report, scratch);
+  list.insert(make(1.0, 5.0, Vec2(4.0, 4444444444444.0), 0.0), L, report, scratch);
+  ASSERT_EQ(list.intervals().size(), 1u);
+  EXPECT_EQ(list.intervals()[0].b0, 0.0);
+  EXPECT_EQ(list.intervals()[0].b1, L);
+  EXPECT_EQ(list.intervals()[0].source, near.source);
+}
+
 TEST(Algorithm2, D3TinyGapIsSewnAtTheMidpoint) {
   Edge1 e;
   e.insert(make(0.0, 5.0, Vec2(2.0, 1.0), 0.0));

@@ -66,7 +66,14 @@ inline double tinyLength(const Interval& w, double edgeLength) {
 /// the start of a near saddle's shadow; sewn, the far window reached over it and the saddle's own
 /// window, arriving later, lost there by rounding and never fanned out into the shadow
 /// (tests/data/regression/far-source-sewn-over-a-saddle-shadow.off: 0.41 too much downstream).
+/// On an edge shorter than w's own ε, though, w's ends mean nothing at the precision of its
+/// source (step 3 keeps it as the edge's last window, lastOnShortEdge): its whole ε counts, and
+/// step 4 closes every gap beside it (a window from 4.4e12 away left at [1, 5] of a 6-long edge,
+/// alone or beside a near window at [0, 0.5]:
+/// corpus/fuzz_edge_update/regress/no-tiny-interval-short-edge-window-not-sewn-*).
 inline double sewLength(const Interval& w, double edgeLength) {
+  const double epsilon = tinyLength(w, edgeLength);
+  if (edgeLength < epsilon) return epsilon;
   return tol::kTinyIntervalRel * edgeLength + tol::kRayEndRel * intervalLengthScale(w, edgeLength);
 }
 
