@@ -15,12 +15,12 @@ constexpr std::size_t kFirstChunk = std::size_t{1} << 10;
 // up to one chunk; and, for every capacity up to a chunk, the class that holds it (a table: this
 // is asked at every growth of every list).
 struct SizeClasses {
-  std::array<std::size_t, 64> capacity{};
+  std::array<std::size_t, IntervalPool::kMaxClasses> capacity{};
   int count = 0;
   std::vector<std::uint8_t> classFor;  // classFor[n]: the smallest class with capacity >= n
   SizeClasses() : classFor(kChunk + 1) {
     std::size_t c = 1;
-    while (c <= kChunk && count < 64) {
+    while (c <= kChunk && count < static_cast<int>(IntervalPool::kMaxClasses)) {
       capacity[static_cast<std::size_t>(count++)] = c;
       c = std::max(c + 1, c + c / 4);
     }
@@ -60,12 +60,12 @@ Interval* IntervalPool::allocate(std::size_t capacity) {
     return static_cast<Interval*>(
         ::operator new(capacity * sizeof(Interval), std::align_val_t(alignof(Interval))));
   }
-  if (free_.size() <= static_cast<std::size_t>(k)) free_.resize(static_cast<std::size_t>(k) + 1);
-  std::vector<Interval*>& list = free_[static_cast<std::size_t>(k)];
-  if (!list.empty()) {
-    Interval* p = list.back();
-    list.pop_back();
-    return p;
+  FreeBlock*& head = free_[static_cast<std::size_t>(k)];
+  if (head != nullptr) {
+    FreeBlock* p = head;
+    head = p->next;
+    p->~FreeBlock();
+    return reinterpret_cast<Interval*>(p);
   }
   // Carve from the current chunk; the rest of a chunk too full for this block stays unused.
   while (chunk_ < chunks_.size() && used_ + capacity > chunks_[chunk_].capacity) {
@@ -90,12 +90,12 @@ void IntervalPool::deallocate(Interval* p, std::size_t capacity) {
     ::operator delete(p, std::align_val_t(alignof(Interval)));
     return;
   }
-  if (free_.size() <= static_cast<std::size_t>(k)) free_.resize(static_cast<std::size_t>(k) + 1);
-  free_[static_cast<std::size_t>(k)].push_back(p);
+  FreeBlock*& head = free_[static_cast<std::size_t>(k)];
+  head = ::new (static_cast<void*>(p)) FreeBlock{head};
 }
 
 void IntervalPool::recycle() {
-  for (auto& list : free_) list.clear();
+  free_.fill(nullptr);
   chunk_ = 0;
   used_ = 0;
 }

@@ -97,6 +97,10 @@ Mesh::Mesh(TriangleSoup soup) : soup_(std::move(soup)) {
     return x.a != y.a ? x.a < y.a : (x.b != y.b ? x.b < y.b : x.face < y.face);
   });
   faceEdges_.assign(nf, {kNoIndex, kNoIndex, kNoIndex});
+  std::size_t numEdges = 0;  // (reserved: one allocation, not one per doubling)
+  for (std::size_t i = 0; i < half.size(); ++i)
+    numEdges += i == 0 || half[i].a != half[i - 1].a || half[i].b != half[i - 1].b;
+  edges_.reserve(numEdges);
   for (std::size_t i = 0; i < half.size();) {
     std::size_t j = i;
     while (j < half.size() && half[j].a == half[i].a && half[j].b == half[i].b) ++j;

@@ -101,15 +101,16 @@ ResolvedPoint resolve(const Mesh& mesh, const SurfacePoint& p) {
       }
       return vertexPoint(p.vertex);
     case SurfacePoint::Kind::Edge: {
-      const std::string what = "edge point " + formatSurfacePoint(p);
+      // Named only when refused: a query's point is resolved on every distance() call.
+      const auto what = [&] { return "edge point " + formatSurfacePoint(p); };
       if (p.vertex >= mesh.numVertices() || p.toVertex >= mesh.numVertices())
-        throw InputError("bad-point", what + ": vertex index out of range");
+        throw InputError("bad-point", what() + ": vertex index out of range");
       const Index e = mesh.findEdge(p.vertex, p.toVertex);
       if (e == kNoIndex) {
-        throw InputError("bad-point", what + ": vertices " + std::to_string(p.vertex) + " and " +
+        throw InputError("bad-point", what() + ": vertices " + std::to_string(p.vertex) + " and " +
                                           std::to_string(p.toVertex) + " share no edge");
       }
-      if (!(p.t >= 0.0 && p.t <= 1.0)) throw InputError("bad-point", what + ": fraction not in [0, 1]");
+      if (!(p.t >= 0.0 && p.t <= 1.0)) throw InputError("bad-point", what() + ": fraction not in [0, 1]");
       if (p.t <= tol::kSnapParam) return vertexPoint(p.vertex);
       if (p.t >= 1.0 - tol::kSnapParam) return vertexPoint(p.toVertex);
       const Edge& E = mesh.edge(e);
@@ -118,15 +119,15 @@ ResolvedPoint resolve(const Mesh& mesh, const SurfacePoint& p) {
       return ResolvedPoint{SurfacePoint::Kind::Edge, e, fromStart * E.length, {}, pos};
     }
     case SurfacePoint::Kind::Face: {
-      const std::string what = "face point " + formatSurfacePoint(p);
+      const auto what = [&] { return "face point " + formatSurfacePoint(p); };
       if (p.face >= mesh.numFaces())
-        throw InputError("bad-point", what + ": face " + std::to_string(p.face) + " does not exist (the mesh has " +
+        throw InputError("bad-point", what() + ": face " + std::to_string(p.face) + " does not exist (the mesh has " +
                                           std::to_string(mesh.numFaces()) + " faces)");
       const auto& b = p.bary;
       for (double x : b)
-        if (!(x >= 0.0) || !std::isfinite(x)) throw InputError("bad-point", what + ": barycentrics must be finite and >= 0");
+        if (!(x >= 0.0) || !std::isfinite(x)) throw InputError("bad-point", what() + ": barycentrics must be finite and >= 0");
       if (std::abs(b[0] + b[1] + b[2] - 1.0) > 1e-9)
-        throw InputError("bad-point", what + ": barycentrics must sum to 1");
+        throw InputError("bad-point", what() + ": barycentrics must sum to 1");
       const auto& corners = mesh.face(p.face);
       for (int k = 0; k < 3; ++k)
         if (b[k] >= 1.0 - tol::kSnapParam) return vertexPoint(corners[k]);

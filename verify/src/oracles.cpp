@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <type_traits>
 #include <limits>
 #include <queue>
 #include <sstream>
@@ -16,22 +17,29 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-void require(bool cond, const std::string& message) {
-  if (!cond) throw std::invalid_argument(message);
+// Messages are built only when a check fails: these checks run per vertex or face of every
+// oracle call, thousands of times a second under the fuzzers.
+
+/// Throws std::invalid_argument unless cond holds; a message given as a callable is built then.
+template <typename Message>
+void require(bool cond, Message&& message) {
+  if (cond) return;
+  if constexpr (std::is_invocable_v<Message>) throw std::invalid_argument(message());
+  else throw std::invalid_argument(message);
 }
 
 void requireVertex(const TriangleSoup& soup, Index v, const char* what) {
-  require(v < soup.positions.size(), std::string(what) + ": vertex " + std::to_string(v) +
-                                         " out of range (" +
-                                         std::to_string(soup.positions.size()) + " vertices)");
+  if (v < soup.positions.size()) return;
+  throw std::invalid_argument(std::string(what) + ": vertex " + std::to_string(v) + " out of range (" +
+                              std::to_string(soup.positions.size()) + " vertices)");
 }
 
 void requireFaces(const TriangleSoup& soup, const char* what) {
   for (std::size_t f = 0; f < soup.faces.size(); ++f)
     for (Index v : soup.faces[f])
-      require(v < soup.positions.size(), std::string(what) + ": face " + std::to_string(f) +
-                                             " references vertex " + std::to_string(v) +
-                                             " out of range");
+      if (v >= soup.positions.size())
+        throw std::invalid_argument(std::string(what) + ": face " + std::to_string(f) +
+                                    " references vertex " + std::to_string(v) + " out of range");
 }
 
 std::uint64_t edgeKey(Index a, Index b) {
@@ -91,7 +99,10 @@ class ReportBuilder {
  public:
   void pass() { ++report_.checked; }
   /// excess: how far beyond the bound itself; normalizer: |B| + L.
-  void compare(double excess, double allowed, double normalizer, const std::function<std::string()>& describe) {
+  /// describe() names the failure; it runs only then (a template, not std::function: a
+  /// capturing lambda would be copied to the heap at every comparison).
+  template <typename Describe>
+  void compare(double excess, double allowed, double normalizer, Describe&& describe) {
     ++report_.checked;
     if (excess <= 0.0) return;
     const double relative = normalizer > 0.0 ? excess / normalizer : kInf;
@@ -128,8 +139,9 @@ double largestFinite(std::span<const double> values) {
 }
 
 void requireSameSize(std::size_t a, std::size_t b, const char* what) {
-  require(a == b, std::string(what) + ": fields of different sizes (" + std::to_string(a) +
-                      " and " + std::to_string(b) + ")");
+  if (a == b) return;
+  throw std::invalid_argument(std::string(what) + ": fields of different sizes (" + std::to_string(a) +
+                              " and " + std::to_string(b) + ")");
 }
 
 }  // namespace
@@ -149,14 +161,15 @@ Vec3 surfacePointPosition(const TriangleSoup& soup, const SurfacePoint& p) {
       const bool isEdge = std::any_of(soup.faces.begin(), soup.faces.end(), [&](const auto& f) {
         return std::count(f.begin(), f.end(), p.vertex) && std::count(f.begin(), f.end(), p.toVertex);
       });
-      require(isEdge && p.vertex != p.toVertex,
-              "surfacePointPosition: vertices " + std::to_string(p.vertex) + " and " +
-                  std::to_string(p.toVertex) + " share no face");
+      require(isEdge && p.vertex != p.toVertex, [&] {
+        return "surfacePointPosition: vertices " + std::to_string(p.vertex) + " and " +
+               std::to_string(p.toVertex) + " share no face";
+      });
       return (1.0 - p.t) * soup.positions[p.vertex] + p.t * soup.positions[p.toVertex];
     }
     case SurfacePoint::Kind::Face: {
-      require(p.face < soup.faces.size(), "surfacePointPosition: face " +
-                                              std::to_string(p.face) + " out of range");
+      require(p.face < soup.faces.size(),
+              [&] { return "surfacePointPosition: face " + std::to_string(p.face) + " out of range"; });
       const auto& f = soup.faces[p.face];
       for (Index v : f) requireVertex(soup, v, "surfacePointPosition");
       // The same acceptance as geodex::resolve documents: non-negative, summing to 1 within 1e-9.
@@ -413,9 +426,10 @@ std::vector<double> PlanarDomain::distances(const Vec2& source,
   for (std::size_t i = 0; i < n; ++i) order[i] = i;
   for (std::size_t k = 0; k < queries.size(); ++k) {
     const Vec2& q = queries[k];
-    require(contains(q), "PlanarDomain::distances: query " + std::to_string(k) + " (" +
-                             formatDouble(q.x()) + ", " + formatDouble(q.y()) +
-                             ") is outside the domain");
+    require(contains(q), [&] {
+      return "PlanarDomain::distances: query " + std::to_string(k) + " (" + formatDouble(q.x()) + ", " +
+             formatDouble(q.y()) + ") is outside the domain";
+    });
     // Try the nodes by increasing candidate distance; the first visible one is the answer.
     std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
       const double da = nodeDistance[a] + (q - nodes[a]).norm();
@@ -453,10 +467,11 @@ std::vector<Polygon2> planarBoundaryPolygons(const TriangleSoup& soup) {
     neighbours[a].push_back(b);
     neighbours[b].push_back(a);
   }
-  for (const auto& [v, adjacent] : neighbours)
-    require(adjacent.size() == 2, "planarBoundaryPolygons: vertex " + std::to_string(v) +
-                                      " has " + std::to_string(adjacent.size()) +
-                                      " boundary edges (a pinch)");
+  for (const auto& entry : neighbours)  // not a structured binding: clang 14 cannot capture one
+    require(entry.second.size() == 2, [&] {
+      return "planarBoundaryPolygons: vertex " + std::to_string(entry.first) + " has " +
+             std::to_string(entry.second.size()) + " boundary edges (a pinch)";
+    });
 
   std::vector<Polygon2> loops;
   std::map<Index, bool> visited;
@@ -525,19 +540,19 @@ CheckReport checkUpperBound(std::span<const double> d, std::span<const double> u
   const double scale = largestFinite(upper);
   ReportBuilder report;
   for (std::size_t i = 0; i < d.size(); ++i) {
-    const std::string vertex = "vertex " + std::to_string(i);
+    const auto vertex = [i] { return "vertex " + std::to_string(i); };
     if (notADistance(d[i]) || notADistance(upper[i])) {
-      report.failNaN(vertex + ": distance " + formatDouble(d[i]) + ", upper bound " +
+      report.failNaN(vertex() + ": distance " + formatDouble(d[i]) + ", upper bound " +
                      formatDouble(upper[i]));
     } else if (std::isfinite(d[i]) != std::isfinite(upper[i])) {
-      report.failInfinite(vertex + ": distance " + formatDouble(d[i]) + " but upper bound " +
+      report.failInfinite(vertex() + ": distance " + formatDouble(d[i]) + " but upper bound " +
                           formatDouble(upper[i]) + " (one reachable, the other not)");
     } else if (!std::isfinite(d[i])) {
       report.pass();  // both unreachable
     } else {
       const double normalizer = std::abs(upper[i]) + scale;
       report.compare(d[i] - upper[i], relTol * normalizer + absTol, normalizer, [&] {
-        return vertex + ": distance " + formatDouble(d[i]) + " above the upper bound " +
+        return vertex() + ": distance " + formatDouble(d[i]) + " above the upper bound " +
                formatDouble(upper[i]);
       });
     }
@@ -556,9 +571,9 @@ CheckReport checkLipschitz(const TriangleSoup& soup, std::span<const double> d, 
   for (const auto& ab : uniqueEdges(soup)) {
     // Plain copies, not structured bindings: clang 14 cannot capture those in the lambda below.
     const Index a = ab.first, b = ab.second;
-    const std::string edge = "edge " + std::to_string(a) + "-" + std::to_string(b);
+    const auto edge = [a, b] { return "edge " + std::to_string(a) + "-" + std::to_string(b); };
     if (notADistance(d[a]) || notADistance(d[b])) {
-      report.failNaN(edge + ": distances " + formatDouble(d[a]) + " and " + formatDouble(d[b]));
+      report.failNaN(edge() + ": distances " + formatDouble(d[a]) + " and " + formatDouble(d[b]));
       continue;
     }
     if (!std::isfinite(d[a]) || !std::isfinite(d[b])) continue;  // not checked
@@ -566,7 +581,7 @@ CheckReport checkLipschitz(const TriangleSoup& soup, std::span<const double> d, 
     const double jump = std::abs(d[a] - d[b]);
     const double normalizer = length + scale;
     report.compare(jump - length, relTol * normalizer, normalizer, [&] {
-      return edge + ": distances " + formatDouble(d[a]) + " and " + formatDouble(d[b]) +
+      return edge() + ": distances " + formatDouble(d[a]) + " and " + formatDouble(d[b]) +
              " differ by more than the edge length " + formatDouble(length);
     });
   }
@@ -600,19 +615,19 @@ CheckReport checkAgreement(std::span<const double> d, std::span<const double> re
   const double scale = largestFinite(reference);
   ReportBuilder report;
   for (std::size_t i = 0; i < d.size(); ++i) {
-    const std::string vertex = "vertex " + std::to_string(i);
+    const auto vertex = [i] { return "vertex " + std::to_string(i); };
     if (notADistance(d[i]) || notADistance(reference[i])) {
-      report.failNaN(vertex + ": not a distance (distance " + formatDouble(d[i]) + ", reference " +
+      report.failNaN(vertex() + ": not a distance (distance " + formatDouble(d[i]) + ", reference " +
                      formatDouble(reference[i]) + ")");
     } else if (std::isfinite(d[i]) != std::isfinite(reference[i])) {
-      report.failInfinite(vertex + ": distance " + formatDouble(d[i]) + " but reference " +
+      report.failInfinite(vertex() + ": distance " + formatDouble(d[i]) + " but reference " +
                           formatDouble(reference[i]));
     } else if (!std::isfinite(d[i])) {
       report.pass();
     } else {
       const double normalizer = std::abs(reference[i]) + scale;
       report.compare(std::abs(d[i] - reference[i]), relTol * normalizer + absTol, normalizer, [&] {
-        return vertex + ": distance " + formatDouble(d[i]) + " differs from the reference " +
+        return vertex() + ": distance " + formatDouble(d[i]) + " differs from the reference " +
                formatDouble(reference[i]);
       });
     }
