@@ -4,12 +4,12 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
-#include <type_traits>
 #include <limits>
+#include <map>
 #include <queue>
 #include <sstream>
 #include <stdexcept>
-#include <map>
+#include <type_traits>
 
 namespace geodex::verify {
 
@@ -29,17 +29,19 @@ void require(bool cond, Message&& message) {
 }
 
 void requireVertex(const TriangleSoup& soup, Index v, const char* what) {
-  if (v < soup.positions.size()) return;
-  throw std::invalid_argument(std::string(what) + ": vertex " + std::to_string(v) + " out of range (" +
-                              std::to_string(soup.positions.size()) + " vertices)");
+  require(v < soup.positions.size(), [&] {
+    return std::string(what) + ": vertex " + std::to_string(v) + " out of range (" +
+           std::to_string(soup.positions.size()) + " vertices)";
+  });
 }
 
 void requireFaces(const TriangleSoup& soup, const char* what) {
   for (std::size_t f = 0; f < soup.faces.size(); ++f)
     for (Index v : soup.faces[f])
-      if (v >= soup.positions.size())
-        throw std::invalid_argument(std::string(what) + ": face " + std::to_string(f) +
-                                    " references vertex " + std::to_string(v) + " out of range");
+      require(v < soup.positions.size(), [&] {
+        return std::string(what) + ": face " + std::to_string(f) + " references vertex " +
+               std::to_string(v) + " out of range";
+      });
 }
 
 std::uint64_t edgeKey(Index a, Index b) {
@@ -139,9 +141,10 @@ double largestFinite(std::span<const double> values) {
 }
 
 void requireSameSize(std::size_t a, std::size_t b, const char* what) {
-  if (a == b) return;
-  throw std::invalid_argument(std::string(what) + ": fields of different sizes (" + std::to_string(a) +
-                              " and " + std::to_string(b) + ")");
+  require(a == b, [&] {
+    return std::string(what) + ": fields of different sizes (" + std::to_string(a) + " and " +
+           std::to_string(b) + ")";
+  });
 }
 
 }  // namespace
