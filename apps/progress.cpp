@@ -74,7 +74,7 @@ void ProgressReporter::print(bool finished) {
   // Vertices at or below the wavefront radius are final: windows still queued are all farther.
   // Counting them is O(#V), affordable at 5 Hz. At the end every finite distance is final.
   std::size_t finalCount = 0;
-  for (double d : solver_.vertexDistances()) {
+  for (double d : solver_.vertexDistancesInMeshUnits()) {  // as radius_, the windows' distances
     if (finished ? std::isfinite(d) : d <= radius_) ++finalCount;
   }
   const double seconds = std::chrono::duration<double>(Clock::now() - startTime_).count();
@@ -88,7 +88,7 @@ void ProgressReporter::print(bool finished) {
   const double rate = seconds > 0.0 ? windows / seconds : 0.0;
   std::fprintf(out_,
                "\rsolving: %5.1f%% of vertices final, wavefront at %.6g, %.2f M windows/s  ",
-               share, radius_, rate * 1e-6);
+               share, radius_ * solver_.mesh().unit(), rate * 1e-6);
   std::fflush(out_);
   printed_ = true;
 }

@@ -1,6 +1,8 @@
 #include "geodex/edge_intervals.h"
 
 #include <algorithm>
+#include <bit>
+#include <cstdint>
 #include <cmath>
 
 #include "geodex/check.h"
@@ -207,6 +209,19 @@ std::size_t EdgeIntervals::closeShadows(double widest, double passed) {
   return closed;
 }
 
+namespace {
+
+// 2^-⌊log2 x⌋, so that x times it lies in [1, 2): exact to multiply by. From the bits when x is a
+// normal double whose inverse is one too (std::ilogb and std::ldexp are library calls, a
+// measurable part of Eq. 1); 1 for zero, inf or NaN.
+double inversePowerOfTwo(double x) {
+  const std::uint64_t biased = (std::bit_cast<std::uint64_t>(x) >> 52) & 0x7ff;
+  if (biased >= 1 && biased <= 2045) return std::bit_cast<double>((2046 - biased) << 52);
+  return x > 0.0 && std::isfinite(x) ? std::ldexp(1.0, -std::ilogb(x)) : 1.0;
+}
+
+}  // namespace
+
 // ===  Eq. 1 ======================================================================================
 // σa + |x − sa| = σb + |x − sb| for x on the edge line. With c = σb − σa, squaring twice gives
 // A x² + B x + C = 0. Coordinates are shifted to the middle of [lo, hi] first, so that the
@@ -214,10 +229,19 @@ std::size_t EdgeIntervals::closeShadows(double widest, double passed) {
 int equalDistanceCandidates(const Interval& a, const Interval& b, double lo, double hi,
                             double roots[2]) {
   const double m = 0.5 * (lo + hi);
-  const double half = 0.5 * (hi - lo);
-  const double x1 = a.source.x() - m, y1 = a.source.y();
-  const double x2 = b.source.x() - m, y2 = b.source.y();
-  const double c = b.sigma - a.sigma;
+  // The coefficients are products of up to six lengths: measured in a power of two of the
+  // largest one (exact), they stay of order one at any mesh scale and source distance.
+  const double size = std::max({std::abs(a.source.x() - m), a.source.y(), std::abs(b.source.x() - m),
+                                b.source.y(), std::abs(b.sigma - a.sigma), 0.5 * (hi - lo)});
+#ifdef GEODEX_NO_MESH_UNITS  // bench-only build (solver/CMakeLists.txt)
+  const double k = 1.0;
+#else
+  const double k = inversePowerOfTwo(size);
+#endif
+  const double half = 0.5 * (hi - lo) * k;
+  const double x1 = (a.source.x() - m) * k, y1 = a.source.y() * k;
+  const double x2 = (b.source.x() - m) * k, y2 = b.source.y() * k;
+  const double c = (b.sigma - a.sigma) * k;
   const double alpha = 2.0 * (x2 - x1);
   const double beta = x1 * x1 + y1 * y1 - x2 * x2 - y2 * y2 - c * c;
   const double A = alpha * alpha - 4.0 * c * c;
@@ -240,7 +264,7 @@ int equalDistanceCandidates(const Interval& a, const Interval& b, double lo, dou
   }
   int kept = 0;
   for (int i = 0; i < n; ++i) {
-    const double x = r[i] + m;
+    const double x = r[i] / k + m;
     if (std::isfinite(x) && x > lo && x < hi) roots[kept++] = x;
   }
   if (kept == 2 && roots[0] > roots[1]) std::swap(roots[0], roots[1]);

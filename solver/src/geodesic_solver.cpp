@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
+#include <string>
+#include <string_view>
 
 #include "geodex/check.h"
 #include "geodex/error.h"
@@ -61,6 +64,9 @@ void GeodesicSolver::reset() {
 // ===  Solve ======================================================================================
 void GeodesicSolver::solve(std::span<const SurfacePoint> sources, const SolveOptions& options) {
   GEODEX_REQUIRE(!std::isnan(options.stopDistance), "stop distance is NaN");
+  // Everything below is in mesh units (Mesh::unit(), a power of two: the division is exact).
+  SolveOptions inMeshUnits;
+  inMeshUnits.stopDistance = options.stopDistance * mesh_.meshUnit().inverse;
   std::vector<ResolvedPoint> resolvedSources, targets;
   for (const SurfacePoint& p : sources) resolvedSources.push_back(resolve(mesh_, p));
   for (const SurfacePoint& p : options.targets) targets.push_back(resolve(mesh_, p));
@@ -77,8 +83,8 @@ void GeodesicSolver::solve(std::span<const SurfacePoint> sources, const SolveOpt
     prefetchAhead();
     // No queued key is below `bound`: distances up to it are final.
     const double bound = queue_.lowerBound();
-    if (bound > options.stopDistance) {
-      radius = options.stopDistance;
+    if (bound > inMeshUnits.stopDistance) {
+      radius = inMeshUnits.stopDistance;
       break;
     }
     if (!targets.empty()) {
@@ -91,7 +97,7 @@ void GeodesicSolver::solve(std::span<const SurfacePoint> sources, const SolveOpt
     }
     queue_.pop();
     ++pops;
-    if (top.key > options.stopDistance) continue;  // beyond the stop, in the last bucket
+    if (top.key > inMeshUnits.stopDistance) continue;  // beyond the stop, in the last bucket
     if (top.edge == kNoIndex) {  // a pseudo-source event; stale if the vertex improved since
       if (top.key == vertexDistance_[top.vertex()]) {
         createPseudoSourceWindows(top.vertex(), top.key, static_cast<std::int32_t>(top.vertex()));
@@ -112,7 +118,7 @@ void GeodesicSolver::solve(std::span<const SurfacePoint> sources, const SolveOpt
                        << " faces");
 #endif
   }
-  finish(options, radius);
+  finish(inMeshUnits, radius);
 }
 
 void GeodesicSolver::seedSource(const ResolvedPoint& p, std::size_t number) {
@@ -398,11 +404,12 @@ void GeodesicSolver::updateVertex(Index v, double d) {
 }
 
 void GeodesicSolver::finish(const SolveOptions& options, double radius) {
-  stats_.radius = radius;
+  radius_ = radius;
+  stats_.radius = radius * mesh_.unit();
   const double cutoff = std::min(radius, options.stopDistance);
   // The wavefront has passed every distance up to the cutoff: a thin gap left there is a shadow
   // between windows that meet along a ray through a vertex up to rounding (tol::kShadowSewRel).
-  const double widest = tol::kShadowSewRel * mesh_.boundingBoxDiagonal();
+  const double widest = tol::kShadowSewRel * mesh_.boundingBoxDiagonalInMeshUnits();
   for (EdgeIntervals& e : edges_) stats_.shadowsClosed += e.closeShadows(widest, cutoff);
   for (Index v = 0; v < mesh_.numVertices(); ++v) {
     if (vertexDistance_[v] > cutoff) vertexDistance_[v] = kInfinity;
@@ -414,12 +421,30 @@ void GeodesicSolver::finish(const SolveOptions& options, double radius) {
   }
   stats_.intervalsAtEnd = total;
   stats_.maxIntervalsPerEdge = most;
+  vertexDistanceInFileUnits_.clear();
+  if (mesh_.unit() != 1.0) {
+    vertexDistanceInFileUnits_.resize(vertexDistance_.size());
+    for (Index v = 0; v < vertexDistance_.size(); ++v)
+      vertexDistanceInFileUnits_[v] = inFileUnits(vertexDistance_[v], "vertex", v);
+  }
   if (hooked()) observer_->onFinish(*this);
 }
 
 // ===  Queries ====================================================================================
 double GeodesicSolver::distance(const SurfacePoint& p) const {
-  return resolvedDistance(resolve(mesh_, p));
+  return inFileUnits(resolvedDistance(resolve(mesh_, p)), "point", 0);
+}
+
+double GeodesicSolver::inFileUnits(double d, const char* what, std::size_t which) const {
+  const double scaled = d * mesh_.unit();  // exact, unless it overflows (or leaves the normals)
+  if (std::isfinite(d) && !std::isfinite(scaled)) {
+    std::ostringstream os;
+    os << "the distance of " << what << (std::string_view(what) == "vertex" ? " " + std::to_string(which) : "")
+       << " is 2^" << mesh_.meshUnit().exponent << " x " << d
+       << ", beyond the largest double (1.8e308); scale the mesh down";
+    throw InputError("distance-overflow", os.str());
+  }
+  return scaled;
 }
 
 double GeodesicSolver::resolvedDistance(const ResolvedPoint& p) const {
@@ -467,7 +492,7 @@ double GeodesicSolver::resolvedDistance(const ResolvedPoint& p) const {
       break;
     }
   }
-  return best > stats_.radius ? kInfinity : best;
+  return best > radius_ ? kInfinity : best;
 }
 
 double GeodesicSolver::targetsMaxDistance(std::span<const ResolvedPoint> targets) const {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <numeric>
 #include <sstream>
@@ -67,14 +68,25 @@ Mesh::Mesh(TriangleSoup soup) : soup_(std::move(soup)) {
                              " and " + std::to_string(t[(k + 1) % 3]) +
                              " are at the same position (weld duplicate vertices first)");
       }
-      const double length = lengthForRangeCheck(P[t[(k + 1) % 3]] - P[t[k]]);
-      if (!(length >= tol::kMinEdgeLength && length <= tol::kMaxEdgeLength)) {
-        std::ostringstream os;
-        os << where(soup_, soup_.faceLines, f) << "face " << f << ": edge " << t[k] << "-"
-           << t[(k + 1) % 3] << " has length " << length << ", outside the range ["
-           << tol::kMinEdgeLength << ", " << tol::kMaxEdgeLength
-           << "] geodex can compute with (its squares would under- or overflow); scale the mesh";
-        throw InputError("edge-length-out-of-range", os.str());
+    }
+  }
+
+  // ===  Mesh units: the largest coordinate of a vertex that faces use, to a power of two ========
+  double largest = 0.0;
+  for (const auto& t : F)
+    for (Index v : t) largest = std::max(largest, P[v].cwiseAbs().maxCoeff());
+  unit_ = meshUnitOf(largest);
+  const auto at = [&](Index v) -> Vec3 { return P[v] * unit_.inverse; };  // exact
+  for (std::size_t f = 0; f < nf; ++f) {
+    const auto& t = F[f];
+    for (int k = 0; k < 3; ++k) {
+      const double length = (at(t[(k + 1) % 3]) - at(t[k])).norm();
+      const EdgeLengthProblem problem = edgeLengthProblem(length, unit_);
+      if (problem != EdgeLengthProblem::None) {
+        throw InputError(edgeLengthProblemKind(problem),
+                         where(soup_, soup_.faceLines, f) + "face " + std::to_string(f) + ": edge " +
+                             std::to_string(t[k]) + "-" + std::to_string(t[(k + 1) % 3]) + " " +
+                             describeEdgeLengthProblem(problem, length, unit_));
       }
     }
   }
@@ -114,7 +126,7 @@ Mesh::Mesh(TriangleSoup soup) : soup_(std::move(soup)) {
     }
     const Index e = static_cast<Index>(edges_.size());
     Edge edge{{half[i].a, half[i].b}, {half[i].face, j - i == 2 ? half[i + 1].face : kNoIndex},
-              (P[half[i].b] - P[half[i].a]).norm()};
+              (at(half[i].b) - at(half[i].a)).norm()};
     edges_.push_back(edge);
     for (std::size_t k = i; k < j; ++k) faceEdges_[half[k].face][half[k].local] = e;
     i = j;
@@ -129,9 +141,9 @@ Mesh::Mesh(TriangleSoup soup) : soup_(std::move(soup)) {
       const Index e = faceEdges_[f][k];
       const Edge& edge = edges_[e];
       const Index apex = F[f][(k + 2) % 3];
-      const Vec3 origin = P[edge.vertex[0]];
-      const Vec3 dir = (P[edge.vertex[1]] - origin) / edge.length;
-      const Vec3 rel = P[apex] - origin;
+      const Vec3 origin = at(edge.vertex[0]);
+      const Vec3 dir = (at(edge.vertex[1]) - origin) / edge.length;
+      const Vec3 rel = at(apex) - origin;
       const double x = rel.dot(dir);
       const double y = rel.cross(dir).norm();
       FaceFrame& fr = frames_[3 * f + k];
@@ -146,10 +158,9 @@ Mesh::Mesh(TriangleSoup soup) : soup_(std::move(soup)) {
       fr.edgeToV2 = nextHasV0 ? kPrev : kNext;
 
       // Corner angle at corner k from atan2(|u × v|, u · v): accurate for needles and caps. The
-      // sides are normalized first: |u × v| squares a product of two lengths, which overflows
-      // for lengths above ~1e77 although each length (kMaxEdgeLength = 1e150) is in range.
-      const Vec3 u = (P[F[f][(k + 1) % 3]] - P[F[f][k]]).normalized();
-      const Vec3 v = (P[F[f][(k + 2) % 3]] - P[F[f][k]]).normalized();
+      // sides are normalized first: |u × v| is a product of two lengths, squared by the norm.
+      const Vec3 u = (at(F[f][(k + 1) % 3]) - at(F[f][k])).normalized();
+      const Vec3 v = (at(F[f][(k + 2) % 3]) - at(F[f][k])).normalized();
       cornerAngles_[3 * f + k] = std::atan2(u.cross(v).norm(), u.dot(v));
     }
   }
@@ -229,14 +240,16 @@ Mesh::Mesh(TriangleSoup soup) : soup_(std::move(soup)) {
     if (label[r] == kNoIndex) label[r] = static_cast<Index>(numComponents_++);
     component_[v] = label[r];
   }
-  if (nv > 0) {
-    Vec3 lo = P[0], hi = P[0];
-    for (const Vec3& p : P) {
-      lo = lo.cwiseMin(p);
-      hi = hi.cwiseMax(p);
-    }
-    bboxDiagonal_ = (hi - lo).norm();
+  bool any = false;
+  Vec3 lo, hi;
+  for (Index v = 0; v < nv; ++v) {
+    if (!isReferenced(v)) continue;
+    const Vec3 p = at(v);
+    lo = any ? lo.cwiseMin(p) : p;
+    hi = any ? hi.cwiseMax(p) : p;
+    any = true;
   }
+  bboxDiagonal_ = any ? (hi - lo).norm() : 0.0;
 }
 
 namespace {
@@ -263,18 +276,18 @@ std::uint64_t mortonCode(std::uint32_t x, std::uint32_t y, std::uint32_t z) {
 // the first read of a popped interval's list). Edge numbers are internal: callers name edges by
 // their vertices.
 void Mesh::sortEdgesAlongSpace() {
-  const auto& P = soup_.positions;
   if (edges_.empty()) return;
-  Vec3 lo = P[edges_[0].vertex[0]], hi = lo;
+  const auto P = [&](Index v) -> Vec3 { return positionInMeshUnits(v); };
+  Vec3 lo = P(edges_[0].vertex[0]), hi = lo;
   for (const Edge& e : edges_)
     for (Index v : e.vertex) {
-      lo = lo.cwiseMin(P[v]);
-      hi = hi.cwiseMax(P[v]);
+      lo = lo.cwiseMin(P(v));
+      hi = hi.cwiseMax(P(v));
     }
   const Vec3 extent = (hi - lo).cwiseMax(Vec3::Constant(1e-300));
   std::vector<std::pair<std::uint64_t, Index>> order(edges_.size());
   for (Index e = 0; e < edges_.size(); ++e) {
-    const Vec3 m = 0.5 * (P[edges_[e].vertex[0]] + P[edges_[e].vertex[1]]);
+    const Vec3 m = 0.5 * (P(edges_[e].vertex[0]) + P(edges_[e].vertex[1]));
     const Vec3 q = ((m - lo).cwiseQuotient(extent) * 2097151.0).cwiseMax(0.0).cwiseMin(2097151.0);
     order[e] = {mortonCode(static_cast<std::uint32_t>(q.x()), static_cast<std::uint32_t>(q.y()),
                            static_cast<std::uint32_t>(q.z())),
@@ -292,10 +305,52 @@ void Mesh::sortEdgesAlongSpace() {
     for (Index& e : fe) e = newIndex[e];
 }
 
-double lengthForRangeCheck(const Vec3& d) {
-  const double largest = d.cwiseAbs().maxCoeff();
-  if (!(largest >= tol::kMinEdgeLength / 2.0 && largest <= tol::kMaxEdgeLength)) return largest;
-  return d.norm();  // squares of at most 1e300 and, for the largest, at least 2.5e-301
+MeshUnit meshUnitOf(double largestCoordinate) {
+#ifdef GEODEX_NO_MESH_UNITS  // bench-only build (solver/CMakeLists.txt)
+  if (largestCoordinate >= 0.0) return {};
+#endif
+  // ilogb of a subnormal is below -1022; clamped there the inverse stays finite, and the edges
+  // of such a mesh are refused (EdgeLengthProblem::Subnormal) before anything is computed.
+  const int exponent =
+      largestCoordinate > 0.0 ? std::max(std::ilogb(largestCoordinate), -1022) : 0;
+  return {exponent, std::ldexp(1.0, exponent), std::ldexp(1.0, -exponent)};
+}
+
+EdgeLengthProblem edgeLengthProblem(double lengthInMeshUnits, const MeshUnit& unit) {
+  if (!(lengthInMeshUnits >= tol::kMinEdgeLengthRel)) return EdgeLengthProblem::Spread;
+  const double length = lengthInMeshUnits * unit.unit;
+  if (!(length >= std::numeric_limits<double>::min())) return EdgeLengthProblem::Subnormal;
+  if (!(length <= std::numeric_limits<double>::max())) return EdgeLengthProblem::Overflow;
+  return EdgeLengthProblem::None;
+}
+
+const char* edgeLengthProblemKind(EdgeLengthProblem problem) {
+  return problem == EdgeLengthProblem::Spread ? "edge-length-spread" : "edge-length-out-of-range";
+}
+
+std::string describeEdgeLengthProblem(EdgeLengthProblem problem, double lengthInMeshUnits,
+                                      const MeshUnit& unit) {
+  std::ostringstream os;
+  os.precision(3);
+  switch (problem) {
+    case EdgeLengthProblem::None: return "is fine";
+    case EdgeLengthProblem::Spread:
+      os << "is " << lengthInMeshUnits << " times the mesh's largest coordinate magnitude (2^"
+         << unit.exponent << "), shorter than the " << tol::kMinEdgeLengthRel
+         << " geodex computes with (products of four such lengths would underflow); remove or "
+            "weld the tiny edge";
+      break;
+    case EdgeLengthProblem::Subnormal:
+      os << "has length 2^" << unit.exponent << " x " << lengthInMeshUnits
+         << ", below the smallest normal double (2.2e-308): it and the distances along it cannot "
+            "be represented to full precision; scale the mesh up";
+      break;
+    case EdgeLengthProblem::Overflow:
+      os << "has length 2^" << unit.exponent << " x " << lengthInMeshUnits
+         << ", beyond the largest double (1.8e308); scale the mesh down";
+      break;
+  }
+  return os.str();
 }
 
 Index Mesh::findEdge(Index a, Index b) const {

@@ -1186,7 +1186,16 @@ void validateMesh(const TriangleSoup& soup, std::vector<MeshIssue>& issues) {
     });
   }
 
-  Finding outOfRange, repeatedIndex, zeroLengthEdge, edgeLengthRange, zeroArea;
+  // Mesh units (MeshUnit), from the vertices of faces whose indices are in range, as Mesh has it.
+  double largestCoordinate = 0.0;
+  for (const auto& t : faces) {
+    if (t[0] >= numVertices || t[1] >= numVertices || t[2] >= numVertices) continue;
+    for (const Index v : t)
+      if (finite[v]) largestCoordinate = std::max(largestCoordinate, positions[v].cwiseAbs().maxCoeff());
+  }
+  const MeshUnit unit = meshUnitOf(largestCoordinate);
+
+  Finding outOfRange, repeatedIndex, zeroLengthEdge, edgeLengthRange, edgeLengthSpread, zeroArea;
   // usable: indices in range and distinct, so everything below may index with them.
   std::vector<std::uint8_t> usable(numFaces, 0);
   std::vector<std::uint8_t> referenced(numVertices, 0);
@@ -1236,21 +1245,21 @@ void validateMesh(const TriangleSoup& soup, std::vector<MeshIssue>& issues) {
     for (int k = 0; k < 3 && lengthsInRange; ++k) {
       const Index a = t[k];
       const Index b = t[(k + 1) % 3];
-      const double length = lengthForRangeCheck(positions[b] - positions[a]);
-      if (length >= tol::kMinEdgeLength && length <= tol::kMaxEdgeLength) continue;
+      const double length = ((positions[b] - positions[a]) * unit.inverse).norm();
+      const EdgeLengthProblem problem = edgeLengthProblem(length, unit);
+      if (problem == EdgeLengthProblem::None) continue;
       lengthsInRange = false;
-      edgeLengthRange.add([&, a, b, length](bool full) {
-        std::ostringstream os;
-        os << length;
+      Finding& finding = problem == EdgeLengthProblem::Spread ? edgeLengthSpread : edgeLengthRange;
+      finding.add([&, a, b, length, problem](bool full) {
         return full ? name.atFace(f) + "face " + std::to_string(f) + ": edge " + std::to_string(a) +
-                          "-" + std::to_string(b) + " has length " + os.str() +
-                          ", outside the range geodex can compute with (squares of lengths must "
-                          "neither under- nor overflow); scale the mesh"
+                          "-" + std::to_string(b) + " " +
+                          describeEdgeLengthProblem(problem, length, unit)
                     : name.face(f) + " with edge " + std::to_string(a) + "-" + std::to_string(b);
       });
     }
     if (!lengthsInRange) continue;
-    const Vec3 normal = (positions[t[1]] - positions[t[0]]).cross(positions[t[2]] - positions[t[0]]);
+    const auto at = [&](int k) -> Vec3 { return positions[t[k]] * unit.inverse; };  // mesh units
+    const Vec3 normal = (at(1) - at(0)).cross(at(2) - at(0));
     if (normal.x() == 0.0 && normal.y() == 0.0 && normal.z() == 0.0) {
       zeroArea.add([&](bool full) {
         return full ? name.atFace(f) + "face " + std::to_string(f) +
@@ -1461,6 +1470,7 @@ void validateMesh(const TriangleSoup& soup, std::vector<MeshIssue>& issues) {
   repeatedIndex.report(issues, Severity::Error, "repeated-index", "faces");
   zeroLengthEdge.report(issues, Severity::Error, "zero-length-edge", "faces");
   edgeLengthRange.report(issues, Severity::Error, "edge-length-out-of-range", "faces");
+  edgeLengthSpread.report(issues, Severity::Error, "edge-length-spread", "faces");
   duplicateFace.report(issues, Severity::Error, "duplicate-face", "duplicates");
   nonManifoldEdge.report(issues, Severity::Error, "non-manifold-edge", "edges");
   zeroArea.report(issues, Severity::Warning, "zero-area-face", "faces");

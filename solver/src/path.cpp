@@ -137,7 +137,7 @@ class Tracer {
   explicit Tracer(const GeodesicSolver& solver)
       : mesh_(solver.mesh()),
         edges_(solver.edgeIntervals()),
-        vertexDistance_(solver.vertexDistances()),
+        vertexDistance_(solver.vertexDistancesInMeshUnits()),
         sources_(solver.sources()) {}
 
   // The cheapest step that moves the path on from `at`, or ends it at a source. `places` receives
@@ -296,9 +296,13 @@ GeodesicPath GeodesicSolver::path(const SurfacePoint& target) const {
       best.source = tracer.sourceAtVertex(best.to.element);
     if (best.source != kNoSource) {
       result.points.push_back(toPathPoint(mesh_, sources_[best.source]));
-      result.length = 0.0;
+      // Summed in mesh units (exact powers of two apart from the file's): squares of file
+      // coordinates overflow beyond 1e154.
+      const double inverse = mesh_.meshUnit().inverse;
+      double length = 0.0;
       for (std::size_t k = 1; k < result.points.size(); ++k)
-        result.length += (result.points[k].position - result.points[k - 1].position).norm();
+        length += ((result.points[k].position - result.points[k - 1].position) * inverse).norm();
+      result.length = inFileUnits(length, "path", 0);
       return result;
     }
     cur = best.to;

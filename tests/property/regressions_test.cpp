@@ -59,7 +59,7 @@ std::string solveAndCheck(const SurfacePoint& source, GeodesicSolver& solver) {
 // tol::vertexAgreementTolerance).
 void expectEdgesAgreeAtVertex(const GeodesicSolver& solver, Index v) {
   const Mesh& mesh = solver.mesh();
-  const double d = solver.vertexDistances()[v];
+  const double d = solver.vertexDistancesInMeshUnits()[v];  // in the intervals' units
   double longest = 0.0;
   for (Index e : mesh.vertexEdges(v)) longest = std::max(longest, mesh.edge(e).length);
   for (Index e : mesh.vertexEdges(v)) {

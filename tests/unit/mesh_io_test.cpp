@@ -583,40 +583,82 @@ TEST(MeshIoValidate, NegativeZeroIsTheSamePosition) {
   expectIssue(issues, "zero-length-edge", Severity::Error, {"face 0", "vertices 0 and 1"});
 }
 
-TEST(MeshIoValidate, EdgeLengthsOutsideTheRangeOfDoublesAreRefusedByName) {
-  // Regression (corpus/*/regress/*denormal-edge-length-underflows-to-zero): distinct positions
-  // 1e-320 apart passed the zero-length test, but the edge's length underflowed to 0 and the
-  // face's angles summed to 0; the solver then failed an internal check. Both the validator and
-  // Mesh refuse such an edge, saying which one and what to do.
-  const auto tiny = validated("v 0 0 0\nv 1e-320 0 0\nv 0 1 0\nf 1 2 3\n");
-  expectIssue(tiny, "edge-length-out-of-range", Severity::Error,
-              {"mem.obj:4:", "face 0", "edge 0-1", "scale the mesh"});
-  const auto huge = validated("v 0 0 0\nv 1e200 0 0\nv 0 1 0\nf 1 2 3\n");
-  expectIssue(huge, "edge-length-out-of-range", Severity::Error, {"face 0", "edge 0-1"});
-  TriangleSoup soup;
-  soup.positions = {Vec3(0, 0, 0), Vec3(1e-320, 0, 0), Vec3(0, 1, 0)};
-  soup.faces = {{0, 1, 2}};
+// What geodex cannot compute with is refused by name, by Mesh and by the validator alike: an edge
+// whose length (in the file's units) is not a normal double, and one so much shorter than the
+// mesh's extent that products of its lengths with the tolerances would underflow (tol::
+// kMinEdgeLengthRel). Anything else is accepted, at any scale.
+void expectMeshRefused(const TriangleSoup& soup, const std::string& kind, const std::string& edge) {
   try {
     const Mesh mesh(soup);
-    ADD_FAILURE() << "a 1e-320 edge was accepted";
+    ADD_FAILURE() << "accepted; expected " << kind;
   } catch (const InputError& e) {
-    EXPECT_EQ(e.kind(), "edge-length-out-of-range");
-    EXPECT_NE(std::string(e.what()).find("edge 0-1"), std::string::npos) << e.what();
+    EXPECT_EQ(e.kind(), kind) << e.what();
+    EXPECT_NE(std::string(e.what()).find(edge), std::string::npos) << e.what();
   }
 }
 
-TEST(MeshIoValidate, CornerAnglesOfAFaceWithLongInRangeEdgesSumToPi) {
-  // Regression (corpus/fuzz_mesh_io/regress/*corner-angle-cross-product-overflows-on-long-edges):
-  // edges of 1.1e132 and 1.1e24 are inside [kMinEdgeLength, kMaxEdgeLength], but |u × v| of the
-  // unnormalized sides squared a product of two lengths, overflowed to inf, and the sharp corner
-  // came out as π/2 (the face's angles summed to 3π/2).
+TEST(MeshIoValidate, AnEdgeBelowTheSpreadGeodexComputesWithIsRefusedByName) {
+  // Distinct positions 1e-320 apart (found by fuzz_mesh_io: the length underflowed to 0 and the
+  // face's angles summed to 0): 1e-320 of the mesh's extent, far below kMinEdgeLengthRel.
+  const auto tiny = validated("v 0 0 0\nv 1e-320 0 0\nv 0 1 0\nf 1 2 3\n");
+  expectIssue(tiny, "edge-length-spread", Severity::Error,
+              {"mem.obj:4:", "face 0", "edge 0-1", "weld the tiny edge"});
+  // 1e-120 of the extent: still refused; 1e-90: computed.
+  expectIssue(validated("v 0 0 0\nv 1e-120 0 0\nv 0 1 0\nf 1 2 3\n"), "edge-length-spread",
+              Severity::Error, {"face 0", "edge 0-1"});
+  for (const MeshIssue& i : validated("v 0 0 0\nv 1e-90 0 0\nv 0 1 0\nf 1 2 3\n"))
+    EXPECT_NE(i.severity, Severity::Error) << i.message;
   TriangleSoup soup;
-  soup.positions = {Vec3(0, 0, 1.1e132), Vec3(0, 1, 0), Vec3(0, 1.1e24, 0)};
+  soup.positions = {Vec3(0, 0, 0), Vec3(1e-320, 0, 0), Vec3(0, 1, 0)};
+  soup.faces = {{0, 1, 2}};
+  expectMeshRefused(soup, "edge-length-spread", "edge 0-1");
+}
+
+TEST(MeshIoValidate, AMeshWhoseEdgesAreNotNormalDoublesIsRefusedByName) {
+  // The whole mesh at 1e-310: its lengths are subnormal, good to a few bits only.
+  expectIssue(validated("v 0 0 0\nv 1e-310 0 0\nv 0 1e-310 0\nf 1 2 3\n"),
+              "edge-length-out-of-range", Severity::Error,
+              {"mem.obj:4:", "face 0", "edge 0-1", "smallest normal double", "scale the mesh up"});
+  // Coordinates of 1.5e308 are finite, but the edge between two of them is 2.1e308 long.
+  expectIssue(validated("v 0 0 0\nv 1.5e308 0 0\nv 0 1.5e308 0\nf 1 2 3\n"),
+              "edge-length-out-of-range", Severity::Error,
+              {"face 0", "edge 1-2", "largest double", "scale the mesh down"});
+  TriangleSoup soup;
+  soup.positions = {Vec3(0, 0, 0), Vec3(1e-310, 0, 0), Vec3(0, 1e-310, 0)};
+  soup.faces = {{0, 1, 2}};
+  expectMeshRefused(soup, "edge-length-out-of-range", "edge 0-1");
+  soup.positions = {Vec3(0, 0, 0), Vec3(1.5e308, 0, 0), Vec3(0, 1.5e308, 0)};
+  expectMeshRefused(soup, "edge-length-out-of-range", "edge 1-2");
+}
+
+TEST(MeshIoValidate, MeshesAtTheEndsOfTheRangeOfDoublesAreAccepted) {
+  for (const double s : {1e-300, 0x1p-1000, 1e300, 0x1p1000}) {
+    TriangleSoup soup;
+    soup.positions = {Vec3(0, 0, 0), Vec3(s, 0, 0), Vec3(0, s, 0), Vec3(0, 0, s)};
+    soup.faces = {{0, 1, 2}, {0, 2, 3}, {0, 3, 1}, {1, 3, 2}};
+    std::vector<MeshIssue> issues;
+    validateMesh(soup, issues);
+    for (const MeshIssue& i : issues) EXPECT_NE(i.severity, Severity::Error) << s << ": " << i.message;
+    const Mesh mesh(soup);
+    EXPECT_EQ(mesh.unit(), std::ldexp(1.0, std::ilogb(s))) << s;
+    for (Index e = 0; e < mesh.numEdges(); ++e) {  // the axes (s) and the diagonals (√2 s)
+      const double ratio = mesh.edge(e).length * mesh.unit() / s;
+      EXPECT_TRUE(ratio == 1.0 || std::abs(ratio - std::sqrt(2.0)) < 1e-15) << s << " edge " << e;
+    }
+  }
+}
+
+TEST(MeshIoValidate, CornerAnglesOfAFaceWithLongEdgesSumToPi) {
+  // Regression (corpus/fuzz_mesh_io/regress/*corner-angle-cross-product-overflows-on-long-edges):
+  // |u × v| of the unnormalized sides squared a product of two lengths, overflowed to inf, and
+  // the sharp corner came out as π/2 (the face's angles summed to 3π/2).
+  TriangleSoup soup;
+  soup.positions = {Vec3(0, 0, 1.1e132), Vec3(0, 1, 0), Vec3(0, 1.1e64, 0)};
   soup.faces = {{0, 1, 2}};
   const Mesh mesh(soup);
   EXPECT_NEAR(mesh.cornerAngle(0, 0) + mesh.cornerAngle(0, 1) + mesh.cornerAngle(0, 2),
               std::numbers::pi, 1e-12);
-  EXPECT_LT(mesh.cornerAngle(0, 0), 1e-100);  // the needle's tip: about 1.1e24 / 1.1e132
+  EXPECT_LT(mesh.cornerAngle(0, 0), 1e-60);  // the needle's tip: about 1.1e64 / 1.1e132
 }
 
 TEST(MeshIoValidate, DuplicateFace) {

@@ -157,6 +157,62 @@ TEST(Fig6, DecisionsAreScaleInvariant) {
   }
 }
 
+// Every power-of-two scale a double holds gives the same leaf and the same children, bit for bit:
+// the children are parameters along e1 and e2, and the tree's products of four lengths must
+// neither under- nor overflow on the way.
+TEST(Fig6, DecisionsAreTheSameBitForBitAtEveryPowerOfTwoScale) {
+  const LocalWindow cases[] = {
+      window(0.5, 1.5, Vec2(0.0, -1.0)),                                 // G2
+      window(0.5, 1.5, Vec2(1.0, -1.0)),                                 // inside the wedge
+      window(0.0, 2.0, Vec2(-1.0, -1.0)),                                // G4
+      window(1.2, 1.6, Vec2(1.0, -1.0)),                                 // left of the wedge
+      window(0.3, 1.9, Vec2(1.0, -1e-8), Vec2(1.0, 1e-7)),               // a flat cap
+      window(0.1, 0.2, Vec2(-3e6, -2e6), Vec2(1e-3, 2e-3), 3e-3),        // a far source
+  };
+  for (const LocalWindow& base : cases) {
+    const LocalPropagation want = propagateLocal(base);
+    for (int k = -1000; k <= 1000; k += 37) {
+      const double f = std::ldexp(1.0, k);
+      const LocalWindow w{base.edgeLength * f, base.apex * f, base.b0 * f, base.b1 * f, base.source * f};
+      if (!std::isnormal(w.edgeLength) || !std::isnormal(w.source.norm() + w.apex.norm()) ||
+          !std::isnormal(w.b0 == 0.0 ? 1.0 : w.b0) || !std::isnormal(w.apex.y()))
+        continue;  // (outside the normal range the scaled configuration is not the same one)
+      const LocalPropagation got = propagateLocal(w);
+      EXPECT_EQ(got.branch, want.branch) << "2^" << k;
+      ASSERT_EQ(got.numChildren, want.numChildren) << "2^" << k;
+      for (int c = 0; c < got.numChildren; ++c) {
+        EXPECT_EQ(got.children[c].edge, want.children[c].edge) << "2^" << k;
+        EXPECT_EQ(got.children[c].t0, want.children[c].t0) << "2^" << k;
+        EXPECT_EQ(got.children[c].t1, want.children[c].t1) << "2^" << k;
+      }
+    }
+  }
+}
+
+// A face 4.4e-106 across, found by fuzz_propagation: the collinearity test's product of four
+// lengths (~1e-424) underflowed to zero, so s, b0 and the apex read as collinear and the tree
+// ended in G2 where it ends in G3 (the right ray passes through the apex). The same face at unit
+// scale decides G3 (corpus/fuzz_propagation/regress/exact-predicates-face-at-1e-106-fourth-
+// powers-underflow).
+TEST(Fig6Regression, AFaceAt1eMinus106DecidesAsAtUnitScale) {
+  const double L = 6.1722061676239887e-106;
+  const LocalWindow tiny{L, Vec2(3.0861030838119938e-106, 3.0861030838119938e-106),
+                         3.9502119472793527e-115, 3.8576288547649929e-107,
+                         Vec2(-2.6521198376509326e-106, -3.4718659692884929e-106)};
+  const double up = std::ldexp(1.0, 350);  // to about 1e-0, exactly
+  const LocalWindow unit{tiny.edgeLength * up, tiny.apex * up, tiny.b0 * up, tiny.b1 * up,
+                         tiny.source * up};
+  const LocalPropagation want = propagateLocal(unit);
+  EXPECT_EQ(want.branch, Fig6Branch::G3);
+  const LocalPropagation got = propagateLocal(tiny);
+  EXPECT_EQ(got.branch, Fig6Branch::G3);
+  ASSERT_EQ(got.numChildren, want.numChildren);
+  for (int c = 0; c < got.numChildren; ++c) {
+    EXPECT_EQ(got.children[c].t0, want.children[c].t0);
+    EXPECT_EQ(got.children[c].t1, want.children[c].t1);
+  }
+}
+
 // ===  Far sources and long edges: crossings measured near the face ==============================
 
 TEST(Fig6Regression, G2NeedleSeenFromFarKeepsE1WhenTheWindowEndIsBelowTheRaysResolution) {

@@ -242,16 +242,20 @@ void planarInto(OracleResult& r, const Mesh& mesh, const std::vector<SurfacePoin
   compareFields(r, "planar shortest path", exact, d, 1.0, diag);
 }
 
+// d in mesh units; the paths are brought into them too.
 void pathsInto(OracleResult& r, const GeodesicSolver& solver, std::span<const double> d) {
   const Mesh& mesh = solver.mesh();
+  const double diag = mesh.boundingBoxDiagonalInMeshUnits();
   const std::size_t n = d.size();
   const std::size_t step = std::max<std::size_t>(1, n / 16);
   for (std::size_t v = 0; v < n; v += step) {
     if (!std::isfinite(d[v])) continue;
-    const GeodesicPath p = solver.path(SurfacePoint::atVertex(static_cast<Index>(v)));
+    GeodesicPath p = solver.path(SurfacePoint::atVertex(static_cast<Index>(v)));
+    p.length *= mesh.meshUnit().inverse;
+    for (PathPoint& q : p.points) q.position *= mesh.meshUnit().inverse;
     ++r.checked;
     std::string why;
-    double err = std::abs(p.length - d[v]) / (d[v] + mesh.boundingBoxDiagonal());
+    double err = std::abs(p.length - d[v]) / (d[v] + diag);
     if (!(err <= kAgreeRel)) why = "length " + fmt(p.length) + " but distance " + fmt(d[v]);
     // Bends only at pseudo-source vertices (or sources): at an edge point the two segments are
     // straight in the unfolding, |a − p| + |p − b| = |a' − b| with a' a rotated about the edge.
@@ -266,13 +270,13 @@ void pathsInto(OracleResult& r, const GeodesicSolver& solver, std::span<const do
           // Passing straight through a flat or convex vertex is allowed only without bending.
           const Vec3 a = p.points[k - 1].position, q = p.points[k].position, b = p.points[k + 1].position;
           const double bend = (a - q).norm() + (q - b).norm() - (a - b).norm();
-          if (bend > 1e-9 * mesh.boundingBoxDiagonal() && mesh.angleSum(w.vertex) < 2 * std::numbers::pi - 1e-9)
+          if (bend > 1e-9 * diag && mesh.angleSum(w.vertex) < 2 * std::numbers::pi - 1e-9)
             why = "bends at vertex " + std::to_string(w.vertex) + ", which is neither a saddle nor on the boundary";
         }
         continue;
       }
       if (w.kind != SurfacePoint::Kind::Edge) continue;
-      const Vec3 e0 = mesh.position(w.vertex), e1 = mesh.position(w.toVertex);
+      const Vec3 e0 = mesh.positionInMeshUnits(w.vertex), e1 = mesh.positionInMeshUnits(w.toVertex);
       const Vec3 u = (e1 - e0).normalized();
       const Vec3 a = p.points[k - 1].position, q = p.points[k].position, b = p.points[k + 1].position;
       auto along = [&](const Vec3& x) { return (x - e0).dot(u); };
@@ -281,8 +285,8 @@ void pathsInto(OracleResult& r, const GeodesicSolver& solver, std::span<const do
       const double ua = along(a), ub = along(b), ha = off(a), hb = off(b);
       const double unfolded = std::hypot(ua - ub, ha + hb);
       const double bend = (a - q).norm() + (q - b).norm() - unfolded;
-      err = std::max(err, std::abs(bend) / mesh.boundingBoxDiagonal());
-      if (std::abs(bend) > kAgreeRel * mesh.boundingBoxDiagonal())
+      err = std::max(err, std::abs(bend) / diag);
+      if (std::abs(bend) > kAgreeRel * diag)
         why = "not straight across edge " + std::to_string(w.vertex) + "-" + std::to_string(w.toVertex) + " (bend " + fmt(bend) + ")";
       (void)q;
     }
@@ -361,7 +365,10 @@ CheckResult runChecks(const Mesh& mesh, const std::vector<SurfacePoint>& sources
   result.counters = solver.counters();
   result.stats = solver.stats();
   result.invariants = checker.tallies();
-  const auto d = solver.vertexDistances();
+  // The oracles work on the mesh in its mesh units (exact), with the distances in mesh units:
+  // their own arithmetic (squares of coordinates) then holds at any scale the solver accepts.
+  const Mesh unitMesh(soupInMeshUnits(mesh));
+  const auto d = solver.vertexDistancesInMeshUnits();
   if (const InvariantViolation* v = checker.firstViolation()) {
     result.violations.push_back(v->what());
     if (!options.reproducerPath.empty()) {
@@ -370,7 +377,7 @@ CheckResult runChecks(const Mesh& mesh, const std::vector<SurfacePoint>& sources
     }
   }
 
-  const TriangleSoup& soup = mesh.soup();
+  const TriangleSoup& soup = unitMesh.soup();
   auto add = [&](OracleResult r) {
     if (r.failed > 0 && !r.advisory) result.violations.push_back("oracle '" + r.name + "': " + r.firstFailure);
     result.oracles.push_back(std::move(r));
@@ -379,16 +386,16 @@ CheckResult runChecks(const Mesh& mesh, const std::vector<SurfacePoint>& sources
     std::vector<Vec3> points;
     for (const SurfacePoint& s : sources) points.push_back(surfacePointPosition(soup, s));
     add(fromReport("bounds-euclidean", checkEuclideanLowerBound(d, euclideanDistances(soup.positions, points), kBoundRel)));
-    add(fromReport("bounds-dijkstra", checkUpperBound(d, edgeGraphDijkstra(mesh, sources), kBoundRel)));
+    add(fromReport("bounds-dijkstra", checkUpperBound(d, edgeGraphDijkstra(unitMesh, sources), kBoundRel)));
   }
-  if (wanted(options, "lipschitz")) add(fromReport("lipschitz", checkLipschitz(mesh, d, kBoundRel)));
-  if (wanted(options, "planar")) add(planarOracle(mesh, sources, d));
+  if (wanted(options, "lipschitz")) add(fromReport("lipschitz", checkLipschitz(unitMesh, d, kBoundRel)));
+  if (wanted(options, "planar")) add(planarOracle(unitMesh, sources, d));
   if (wanted(options, "symmetry") && !sources.empty()) {
     // d(a, ·) from the first source alone: the checked field may have several sources.
     const SurfacePoint& a = sources.front();
-    add(symmetryOracle(mesh, a, exactGeodesicDistance(mesh, std::vector<SurfacePoint>{a})));
+    add(symmetryOracle(unitMesh, a, exactGeodesicDistance(unitMesh, std::vector<SurfacePoint>{a})));
   }
-  if (wanted(options, "metamorphic")) add(metamorphicOracle(mesh, sources, d));
+  if (wanted(options, "metamorphic")) add(metamorphicOracle(unitMesh, sources, d));
   if (wanted(options, "paths")) add(pathOracle(solver, d));
   if (wanted(options, "exact-predicates")) add(exact.result);
   if (wanted(options, "cgal")) {

@@ -256,7 +256,7 @@ void InvariantChecker::onEdgeUpdate(const EdgeUpdateEvent& e) {
 
 void InvariantChecker::onFinish(const GeodesicSolver& solver) {
   if (level_ != CheckLevel::Full) return;
-  checkFinal(solver.mesh(), solver.edgeIntervals(), solver.vertexDistances(), solver.sources(),
+  checkFinal(solver.mesh(), solver.edgeIntervals(), solver.vertexDistancesInMeshUnits(), solver.sources(),
              !std::isfinite(solver.stats().radius));
 }
 

@@ -190,6 +190,15 @@ Vec3 surfacePointPosition(const TriangleSoup& soup, const SurfacePoint& p) {
 
 // === Euclidean lower bound =====================================================================
 
+TriangleSoup soupInMeshUnits(const Mesh& mesh) {
+  TriangleSoup soup = mesh.soup();
+  for (Vec3& p : soup.positions) {
+    p *= mesh.meshUnit().inverse;
+    if (!isFinite(p)) p = Vec3::Zero();
+  }
+  return soup;
+}
+
 std::vector<double> euclideanDistances(std::span<const Vec3> positions, const Vec3& source) {
   std::vector<double> d(positions.size());
   for (std::size_t i = 0; i < positions.size(); ++i) d[i] = (positions[i] - source).norm();

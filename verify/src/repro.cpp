@@ -496,10 +496,14 @@ bool soupValid(const TriangleSoup& soup) {
   return true;
 }
 
-/// An edge the solver computes with: finite, in [kMinEdgeLength, kMaxEdgeLength] (as Mesh's check).
-bool edgeInRange(const Vec3& a, const Vec3& b) {
-  const double length = lengthForRangeCheck(b - a);
-  return length >= tol::kMinEdgeLength && length <= tol::kMaxEdgeLength;
+/// A face the solver computes with: each edge's length, in the face's own mesh units, passes
+/// Mesh's check (edgeLengthProblem).
+bool faceInRange(const Vec3& a, const Vec3& b, const Vec3& c) {
+  const MeshUnit unit = meshUnitOf(std::max({a.cwiseAbs().maxCoeff(), b.cwiseAbs().maxCoeff(), c.cwiseAbs().maxCoeff()}));
+  for (const auto& [p, q] : {std::pair{&a, &b}, std::pair{&b, &c}, std::pair{&c, &a}}) {
+    if (edgeLengthProblem(((*q - *p) * unit.inverse).norm(), unit) != EdgeLengthProblem::None) return false;
+  }
+  return true;
 }
 
 std::optional<PropagationCase> makePropagationCase(const PropagationSpec& s) {
@@ -509,9 +513,7 @@ std::optional<PropagationCase> makePropagationCase(const PropagationSpec& s) {
     for (int k = 0; k < 3; ++k) c.face[i][k] = fieldValue(s.points[i][k], -16, 16, unit, 16 * unit);
   const Vec3 &v0 = c.face[0], &v2 = c.face[1], &v1 = c.face[2];
   // The face a mesh would accept: every edge in range (no zero-length edge, no underflow).
-  if (!isFinite(v0) || !isFinite(v1) || !isFinite(v2) || !edgeInRange(v0, v2) ||
-      !edgeInRange(v0, v1) || !edgeInRange(v1, v2))
-    return std::nullopt;
+  if (!isFinite(v0) || !isFinite(v1) || !isFinite(v2) || !faceInRange(v0, v1, v2)) return std::nullopt;
   const double L = (v2 - v0).norm();
   Interval& w = c.window;
   double b0 = latticeValue(s.b0, 0, 16) / 16.0 * L + nudgeValue(s.b0, L);
@@ -1226,15 +1228,56 @@ ChildInterval childIntervalOf(const PropagationCase& c, const LocalWindow& w, co
 
 }  // namespace
 
-Verdict checkPropagation(const PropagationCase& c) {
+/// The case in its face's mesh units (MeshUnit, exact), as the solver meets the face of a mesh.
+PropagationCase inMeshUnits(const PropagationCase& c, MeshUnit& unit) {
+  double largest = 0.0;
+  for (const Vec3& p : c.face) largest = std::max(largest, p.cwiseAbs().maxCoeff());
+  unit = meshUnitOf(largest);
+  PropagationCase m = c;
+  for (Vec3& p : m.face) p *= unit.inverse;
+  m.window.b0 *= unit.inverse;
+  m.window.b1 *= unit.inverse;
+  m.window.source *= unit.inverse;
+  m.window.sigma *= unit.inverse;
+  return m;
+}
+
+Verdict checkPropagation(const PropagationCase& input) {
   Verdict v;
   v.interesting = true;
+  // The solver propagates in mesh units; the checks below do too, so that their own arithmetic
+  // holds at any scale the decoder reaches.
+  MeshUnit unit;
+  const PropagationCase c = inMeshUnits(input, unit);
   const LocalWindow w = localWindowOf(c);
   LocalPropagation r;
   try {
     r = propagateLocal(w);
   } catch (const std::exception& e) {
     return fail(v, "unexpected-exception", std::string("propagateLocal threw: ") + e.what());
+  }
+  // The Fig. 6 tree decides the same configuration at the input's own scale identically, bit for
+  // bit (the children are parameters): scaling by a power of two must change nothing.
+  {
+    const double k = unit.unit;
+    const LocalWindow atScale{w.edgeLength * k, w.apex * k, w.b0 * k, w.b1 * k, w.source * k};
+    auto normalOrZero = [](double x) { return x == 0.0 || std::isnormal(x); };
+    if (normalOrZero(atScale.edgeLength) && normalOrZero(atScale.apex.x()) && normalOrZero(atScale.apex.y()) &&
+        normalOrZero(atScale.b0) && normalOrZero(atScale.b1) && normalOrZero(atScale.source.x()) &&
+        normalOrZero(atScale.source.y())) {
+      const LocalPropagation scaled = propagateLocal(atScale);
+      bool same = scaled.branch == r.branch && scaled.numChildren == r.numChildren;
+      for (int i = 0; same && i < r.numChildren; ++i) {
+        same = scaled.children[i].edge == r.children[i].edge && scaled.children[i].t0 == r.children[i].t0 &&
+               scaled.children[i].t1 == r.children[i].t1;
+      }
+      if (!same) {
+        std::ostringstream os;
+        os << std::setprecision(17) << "at the input's scale (2^" << unit.exponent << ") the tree gives "
+           << describeResult(scaled) << ", in mesh units " << describeResult(r);
+        return fail(v, "scale-invariance", os.str());
+      }
+    }
   }
   ++v.degeneracies.cases;
   if (const auto k = degeneracyOf(r.branch)) ++v.degeneracies[*k];
@@ -1468,20 +1511,22 @@ class UnfoldingChecker : public SolverObserver {
       throw UnfoldingFailure(why() + "the child's source is not on the crossed face's side");
     if (child.sigma != window_.sigma || child.origin != window_.origin)
       throw UnfoldingFailure(why() + "the child's sigma or origin differs from its parent's");
-    const Vec3 o = mesh_.position(E.vertex[0]);
-    const Vec3 dir = (mesh_.position(E.vertex[1]) - o).normalized();
+    // In mesh units, as the intervals are.
+    const auto at = [&](Index x) { return mesh_.positionInMeshUnits(x); };
+    const Vec3 o = at(E.vertex[0]);
+    const Vec3 dir = (at(E.vertex[1]) - o).normalized();
     Index apex = kNoIndex;
     for (Index x : mesh_.face(face_))
       if (x != E.vertex[0] && x != E.vertex[1]) apex = x;
-    const Vec3 rel = mesh_.position(apex) - o;
+    const Vec3 rel = at(apex) - o;
     const Vec3 perp = rel - rel.dot(dir) * dir;
     const double h = perp.norm();
     const double scale = std::max(rel.norm(), E.length);
     if (!(h > 1e-9 * scale)) return;  // zero-area or needle face: no reliable in-plane normal
     const Vec3 n = perp / h;
     const Vec3 s3 = o + window_.source.x() * dir - window_.source.y() * n;
-    const Vec3 co = mesh_.position(C.vertex[0]);
-    const Vec3 cdir = (mesh_.position(C.vertex[1]) - co).normalized();
+    const Vec3 co = at(C.vertex[0]);
+    const Vec3 cdir = (at(C.vertex[1]) - co).normalized();
     // The normal's rounding grows as the face gets thinner, and moves s3 by that × |s|.
     const double amplification = 1e-14 * window_.source.norm() * (rel.norm() / h);
     // s3 and the sample point are placed in 3D, each to the rounding of its coordinates
@@ -1611,11 +1656,12 @@ Verdict checkTwoFaces(const TwoFaceCase& c, CheckDepth) {
   v.summary = std::to_string(solver.counters().cases) + " propagation cases, " +
               std::to_string(unfolding.checked) + " unfolded distances checked";
 
-  const TriangleSoup& soup = c.soup;
+  const TriangleSoup soup = soupInMeshUnits(*mesh);
+  const double inverse = mesh->meshUnit().inverse;
   const Vec3 S = surfacePointPosition(soup, c.source);
   const unsigned sourceFaces = facesOf(soup, c.source);
   const Vec3 a = soup.positions[0], b = soup.positions[1];  // the shared edge v0 v2
-  const double diag = mesh->boundingBoxDiagonal();
+  const double diag = mesh->boundingBoxDiagonalInMeshUnits();
   double largestCoordinate = 0.0;
   for (const Vec3& x : soup.positions) largestCoordinate = std::max(largestCoordinate, x.cwiseAbs().maxCoeff());
   const double placing = 2.0 * tol::kPositionRoundingRel * largestCoordinate;  // S and Q placed in 3D
@@ -1634,7 +1680,8 @@ Verdict checkTwoFaces(const TwoFaceCase& c, CheckDepth) {
     const double truth = (facesOf(soup, q) & sourceFaces) != 0 ? (S - Q).norm() : viaSegment(S, Q, a, b);
     double got;
     try {
-      got = q.kind == SurfacePoint::Kind::Vertex ? solver.vertexDistances()[q.vertex] : solver.distance(q);
+      got = q.kind == SurfacePoint::Kind::Vertex ? solver.vertexDistancesInMeshUnits()[q.vertex]
+                                                  : solver.distance(q) * inverse;
     } catch (const std::exception& e) {
       return fail(v, "unexpected-exception", std::string("query ") + formatSurfacePoint(q) + ": " + e.what() + where());
     }
@@ -1652,8 +1699,8 @@ namespace {
 
 /// Forwards to the checker for planar oracles: the distances in a planar domain, or nullopt when
 /// the mesh is not one the oracle can describe (pinched boundary, several components).
-std::optional<std::vector<double>> planarReference(const Mesh& mesh, const std::vector<Vec3>& sources) {
-  const TriangleSoup& soup = mesh.soup();
+std::optional<std::vector<double>> planarReference(const Mesh& mesh, const TriangleSoup& soup,
+                                                   const std::vector<Vec3>& sources) {
   if (mesh.numComponents() != 1) return std::nullopt;
   try {
     PlanarDomain domain(planarBoundaryPolygons(soup));
@@ -1683,9 +1730,12 @@ Verdict checkSolver(const SolverCase& c, CheckDepth depth) {
   auto meshOpt = buildMesh(c.soup, v);
   if (!meshOpt) return v;
   const Mesh& mesh = *meshOpt;
-  const TriangleSoup& soup = mesh.soup();
+  // Every oracle below works in mesh units, as the solver does, so that its own arithmetic holds
+  // at any scale; the messages show the mesh as given.
+  const TriangleSoup soup = soupInMeshUnits(mesh);
+  const double inverse = mesh.meshUnit().inverse;
   auto where = [&] {
-    std::string w = "\nmesh:\n" + describeSoup(soup);
+    std::string w = "\nmesh:\n" + describeSoup(mesh.soup());
     for (const SurfacePoint& s : c.sources) w += "source " + formatSurfacePoint(s) + "\n";
     return w;
   };
@@ -1696,7 +1746,8 @@ Verdict checkSolver(const SolverCase& c, CheckDepth depth) {
   solver.setObserver(&unfolding);
   if (!solveChecked(solver, c.sources, {}, v)) return v.message += where(), v;
   v.degeneracies = solver.counters();
-  const std::vector<double> d(solver.vertexDistances().begin(), solver.vertexDistances().end());
+  const auto inMeshUnits = solver.vertexDistancesInMeshUnits();
+  const std::vector<double> d(inMeshUnits.begin(), inMeshUnits.end());
   {
     std::ostringstream os;
     os << mesh.numFaces() << " faces, " << c.sources.size() << " source(s), "
@@ -1704,7 +1755,7 @@ Verdict checkSolver(const SolverCase& c, CheckDepth depth) {
        << " intervals at the end";
     v.summary = os.str();
   }
-  const double diag = mesh.boundingBoxDiagonal();
+  const double diag = mesh.boundingBoxDiagonalInMeshUnits();
   constexpr double kRel = 1e-9;  // DESIGN.md's accuracy target, × the distances or diagonal
 
   for (Index x = 0; x < d.size(); ++x) {
@@ -1742,12 +1793,12 @@ Verdict checkSolver(const SolverCase& c, CheckDepth depth) {
     placing = std::max(placing, 2.0 * tol::kPositionRoundingRel * largestCoordinate + tol::kSnapParam * longest);
   }
   if (!report("euclidean-lower-bound", checkEuclideanLowerBound(d, euclid, kRel, placing))) return v;
-  if (!report("upper-bound", checkUpperBound(d, edgeGraphDijkstra(mesh, c.sources), kRel, placing))) return v;
-  if (!report("lipschitz", checkLipschitz(mesh, d, kRel))) return v;
+  if (!report("upper-bound", checkUpperBound(d, edgeGraphDijkstra(soup, c.sources), kRel, placing))) return v;
+  if (!report("lipschitz", checkLipschitz(soup, d, kRel))) return v;
   if (c.rectangle) {
     if (!report("planar-agreement", checkAgreement(d, euclid, kRel, placing))) return v;
   } else if (c.planar) {
-    if (const auto ref = planarReference(mesh, sourcePositions))
+    if (const auto ref = planarReference(mesh, soup, sourcePositions))
       if (!report("planar-agreement", checkAgreement(d, *ref, kRel, placing))) return v;
   }
 
@@ -1755,7 +1806,7 @@ Verdict checkSolver(const SolverCase& c, CheckDepth depth) {
   for (Index e = 0; e < mesh.numEdges(); ++e) {
     const Edge& E = mesh.edge(e);
     const double du = d[E.vertex[0]], dv = d[E.vertex[1]];
-    const double got = solver.distance(SurfacePoint::onEdge(E.vertex[0], E.vertex[1], 0.5));
+    const double got = solver.distance(SurfacePoint::onEdge(E.vertex[0], E.vertex[1], 0.5)) * inverse;
     const Vec3 mid = 0.5 * (soup.positions[E.vertex[0]] + soup.positions[E.vertex[1]]);
     if (!std::isfinite(du)) {
       if (std::isfinite(got))
@@ -1783,7 +1834,9 @@ Verdict checkSolver(const SolverCase& c, CheckDepth depth) {
     if (std::isfinite(d[x]) && (farthest == kNoIndex || d[x] > d[farthest])) farthest = x;
   if (farthest != kNoIndex && d[farthest] > 0.0) {
     try {
-      const GeodesicPath p = solver.path(SurfacePoint::atVertex(farthest));
+      GeodesicPath p = solver.path(SurfacePoint::atVertex(farthest));
+      p.length *= inverse;
+      for (PathPoint& q : p.points) q.position *= inverse;
       double sum = 0.0;
       for (std::size_t i = 0; i + 1 < p.points.size(); ++i) sum += (p.points[i + 1].position - p.points[i].position).norm();
       double toSource = INFINITY;
@@ -1812,8 +1865,8 @@ Verdict checkSolver(const SolverCase& c, CheckDepth depth) {
     SolveOptions options;
     options.stopDistance = *c.stopDistance;
     if (!solveChecked(stopped, c.sources, options, v)) return v.message += where(), v;
-    const auto ds = stopped.vertexDistances();
-    const double stop = *c.stopDistance;
+    const auto ds = stopped.vertexDistancesInMeshUnits();
+    const double stop = *c.stopDistance * inverse;
     // Distances are good to kRel × diagonal: a vertex that close to the stop may go either way.
     const double band = kRel * (stop + diag);
     for (Index x = 0; x < d.size(); ++x) {
@@ -1832,7 +1885,7 @@ Verdict checkSolver(const SolverCase& c, CheckDepth depth) {
     GeodesicSolver back(mesh);
     const std::vector<SurfacePoint> from{SurfacePoint::atVertex(farthest)};
     if (!solveChecked(back, from, {}, v)) return v.message += where(), v;
-    if (!report("symmetry", checkSymmetry(d[farthest], back.vertexDistances()[c.sources[0].vertex], kRel))) return v;
+    if (!report("symmetry", checkSymmetry(d[farthest], back.vertexDistancesInMeshUnits()[c.sources[0].vertex], kRel))) return v;
   }
   return v;
 }
@@ -2421,8 +2474,9 @@ void svgTwoFaces(const TwoFaceCase& c, std::ostream& out) {
         Vec2 n(-d2.y(), d2.x());
         if (n.dot(q[third] - a) < 0) n = -n;
         const Vec2 off = 3 * px * n;
-        doc.line(G, a + w.b0 * d2 + off, a + w.b1 * d2 + off, colour(w), 4);
-        const Vec2 s = a + w.source.x() * d2 + w.source.y() * n;
+        const double u = mesh.unit();  // intervals are in mesh units, the picture in the file's
+        doc.line(G, a + u * w.b0 * d2 + off, a + u * w.b1 * d2 + off, colour(w), 4);
+        const Vec2 s = a + u * w.source.x() * d2 + u * w.source.y() * n;
         if ((s - 0.5 * (lo + hi)).norm() < 2 * (hi - lo).norm()) doc.dot(G, s, 3, colour(w));
       }
     }

@@ -44,18 +44,18 @@ struct SolveStats {
   /// Thin gaps closed once the wavefront had passed (tol::kShadowSewRel;
   /// EdgeIntervals::closeShadows).
   std::uint64_t shadowsClosed = 0;
-  double radius = kInfinity;  ///< distances up to this are final (inf: ran to the end)
+  double radius = kInfinity;  ///< distances up to this are final (inf: ran to the end), file units
 };
 
 /// One point of a geodesic path.
 struct PathPoint {
   SurfacePoint where;  ///< vertex, or edge point (`vertex` → `toVertex` at fraction t), or face
-  Vec3 position;
+  Vec3 position;       ///< in the mesh file's units
 };
 
 struct GeodesicPath {
   std::vector<PathPoint> points;  ///< from the target back to the nearest source
-  double length = kInfinity;      ///< sum of segment lengths; equals the distance
+  double length = kInfinity;      ///< sum of segment lengths (file units); equals the distance
 };
 
 class GeodesicSolver {
@@ -70,9 +70,15 @@ class GeodesicSolver {
   /// Throws InputError for a source or target outside the mesh.
   void solve(std::span<const SurfacePoint> sources, const SolveOptions& options = {});
 
-  /// Per-vertex distances (+inf for unreachable, unreferenced, or beyond a stop), #V entries.
-  std::span<const double> vertexDistances() const { return vertexDistance_; }
-  /// Distance at any surface point.
+  /// Per-vertex distances (+inf for unreachable, unreferenced, or beyond a stop), #V entries,
+  /// in the mesh file's units. (solve() throws InputError when one overflows a double.)
+  std::span<const double> vertexDistances() const {
+    return mesh_.unit() == 1.0 ? std::span<const double>(vertexDistance_) : vertexDistanceInFileUnits_;
+  }
+  /// The same in mesh units (Mesh::unit()), as the intervals and observer events have them; during
+  /// a solve, the distances found so far.
+  std::span<const double> vertexDistancesInMeshUnits() const { return vertexDistance_; }
+  /// Distance at any surface point, in the mesh file's units. Throws InputError if it overflows.
   double distance(const SurfacePoint& p) const;
   /// The geodesic from p back to the nearest source. Empty with length +inf if unreachable.
   GeodesicPath path(const SurfacePoint& p) const;
@@ -138,13 +144,17 @@ class GeodesicSolver {
   bool hooked() const { return observer_ != nullptr; }
 #endif
   double targetsMaxDistance(std::span<const ResolvedPoint> targets) const;
-  double resolvedDistance(const ResolvedPoint& p) const;
+  double resolvedDistance(const ResolvedPoint& p) const;  // mesh units
+  /// d (mesh units) in the file's units; throws InputError when a finite d overflows there.
+  double inFileUnits(double d, const char* what, std::size_t which) const;
 
   const Mesh& mesh_;
   SolverObserver* observer_ = nullptr;
   IntervalPool pool_;  // before edges_: their lists live in it
   std::vector<EdgeIntervals> edges_;
-  std::vector<double> vertexDistance_;
+  std::vector<double> vertexDistance_;             // mesh units
+  std::vector<double> vertexDistanceInFileUnits_;  // the same × mesh_.unit(), when that is not 1
+  double radius_ = kInfinity;                      // stats_.radius in mesh units
   std::vector<ResolvedPoint> sources_;
   BucketQueue<QueueEntry> queue_;
   double queueBucketWidth_ = 1.0;

@@ -31,11 +31,33 @@ bool isFinite(const Vector& p) {
   return true;
 }
 
-/// |d| where it lies in [tol::kMinEdgeLength, tol::kMaxEdgeLength]; outside that range, a value
-/// also outside it (the largest coordinate's magnitude) — computed without overflow or underflow
-/// for any finite d, which the range check of an edge needs (squaring 1e200 or dividing by 1e-320
-/// raises floating-point exceptions, trapped in debug test runs).
-double lengthForRangeCheck(const Vec3& d);
+/// The power of two geodex measures a mesh's lengths in ("mesh units"): 2^exponent, with the
+/// exponent of the largest coordinate magnitude among the vertices that faces use, so that in
+/// mesh units every such coordinate lies in (-2, 2). Dividing by a power of two is exact: a mesh
+/// scaled by 2^k has the same geometry in mesh units bit for bit, hence the same decisions,
+/// counters and (scaled back, also exactly) distances, at any scale a double can hold.
+/// docs/numerics.md has the argument.
+struct MeshUnit {
+  int exponent = 0;
+  double unit = 1.0;     ///< 2^exponent
+  double inverse = 1.0;  ///< 2^-exponent (finite: the exponent is at least -1022)
+};
+/// The unit for a mesh whose largest coordinate magnitude is `largestCoordinate` (finite, >= 0).
+MeshUnit meshUnitOf(double largestCoordinate);
+
+/// Why an edge cannot be computed with, given its length in mesh units (or None).
+enum class EdgeLengthProblem {
+  None,
+  Spread,     ///< shorter than tol::kMinEdgeLengthRel: products of its lengths would underflow
+  Subnormal,  ///< its length in the mesh's own units is below the smallest normal double
+  Overflow,   ///< its length in the mesh's own units is beyond the largest double
+};
+EdgeLengthProblem edgeLengthProblem(double lengthInMeshUnits, const MeshUnit& unit);
+/// The error kind ('edge-length-spread', 'edge-length-out-of-range') and the end of a message
+/// saying what is wrong with such an edge and what to do, for Mesh and validateMesh alike.
+const char* edgeLengthProblemKind(EdgeLengthProblem problem);
+std::string describeEdgeLengthProblem(EdgeLengthProblem problem, double lengthInMeshUnits,
+                                      const MeshUnit& unit);
 
 /// Triangles and positions before connectivity is built (what the readers produce).
 struct TriangleSoup {
@@ -51,11 +73,11 @@ struct TriangleSoup {
 struct Edge {
   std::array<Index, 2> vertex;  ///< vertex[0] < vertex[1]; edge coordinates run from vertex[0]
   std::array<Index, 2> face;    ///< face[1] == kNoIndex on the boundary
-  double length;
+  double length;                ///< in mesh units (Mesh::unit())
 };
 
 /// The unfolding of one face onto one of its edges: the edge on the x-axis from its vertex[0]
-/// at the origin to vertex[1] at (length, 0), the third vertex (the apex) above it.
+/// at the origin to vertex[1] at (length, 0), the third vertex (the apex) above it; in mesh units.
 struct FaceFrame {
   Index edge;  ///< the edge this frame is built on (e0 of Fig. 3)
   Index edgeToV0;  ///< e1 of Fig. 3: from the edge's vertex[0] (v0) to the apex (v1)
@@ -68,8 +90,9 @@ class Mesh {
  public:
   /// Builds connectivity. Throws InputError (naming the element, and the file line when the soup
   /// has it) for what the solver cannot handle: non-finite coordinates, indices out of range,
-  /// a repeated index in a face, a zero-length edge inside a face, an edge with more than two
-  /// faces. Everything else (zero-area caps, unreferenced vertices, several components,
+  /// a repeated index in a face, a zero-length edge inside a face, an edge whose length is not a
+  /// normal double or is below tol::kMinEdgeLengthRel of the largest coordinate, an edge with
+  /// more than two faces. Everything else (zero-area caps, unreferenced vertices, several components,
   /// non-manifold vertices, inconsistent winding, duplicated positions) is handled.
   explicit Mesh(TriangleSoup soup);
 
@@ -109,7 +132,16 @@ class Mesh {
   /// 0 or 1: which of edge(e).face is f.
   int sideOf(Index e, Index f) const { return edges_[e].face[0] == f ? 0 : 1; }
 
-  double boundingBoxDiagonal() const { return bboxDiagonal_; }
+  /// Positions are in the file's units; edge lengths, frames and everything the solver computes
+  /// in mesh units: that length divided by unit(), a power of two (MeshUnit).
+  double unit() const { return unit_.unit; }
+  const MeshUnit& meshUnit() const { return unit_; }
+  /// Position of v in mesh units (exact: position(v) / unit()).
+  Vec3 positionInMeshUnits(Index v) const { return soup_.positions[v] * unit_.inverse; }
+  /// The diagonal of the bounding box of the vertices faces use, in the file's units (+inf if
+  /// that overflows a double) and in mesh units.
+  double boundingBoxDiagonal() const { return bboxDiagonal_ * unit_.unit; }
+  double boundingBoxDiagonalInMeshUnits() const { return bboxDiagonal_; }
   /// Number of connected components (through shared edges or vertices) with at least one face.
   std::size_t numComponents() const { return numComponents_; }
   Index componentOf(Index v) const { return component_[v]; }
@@ -130,7 +162,8 @@ class Mesh {
   std::vector<Index> vertexEdgeStart_, vertexEdgeList_;
   std::vector<Index> component_;
   std::size_t numComponents_ = 0;
-  double bboxDiagonal_ = 0.0;
+  MeshUnit unit_;
+  double bboxDiagonal_ = 0.0;  // in mesh units
 };
 
 }  // namespace geodex

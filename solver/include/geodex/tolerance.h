@@ -129,13 +129,17 @@ inline constexpr double kTieRel = 1e-14;
 inline constexpr double kFlatVertexAngle = 1e-12;
 
 
-/// The range of edge lengths geodex computes with. Not a tolerance but the limit of doubles: the
-/// solver squares lengths and coordinate differences (distances, Eq. 1, cross products), and a
-/// square below ~1e-308 underflows (a 1e-320 edge has length 0 and its face angles sum to 0)
-/// while one above ~1e308 overflows. A mesh with an edge outside this range is refused by name;
-/// scaling it into range is the remedy (distances scale with it).
-inline constexpr double kMinEdgeLength = 1e-150;
-inline constexpr double kMaxEdgeLength = 1e150;
+/// The shortest edge geodex computes with, relative to the mesh's largest coordinate magnitude.
+/// The solver works in mesh units (Mesh::unit(), that magnitude rounded down to a power of two,
+/// so that dividing by it is exact), where every coordinate is below 2 and every edge below 7.
+/// The products of more than two lengths rescale themselves by a power of two (the Fig. 6 tests
+/// in propagateLocal, Eq. 1 in equalDistanceCandidates); everything else multiplies two lengths
+/// and a tolerance: with edges at least 1e-100 long, a square times kTinyIntervalRel² stays
+/// above 1e-222, clear of the subnormal range (2.2e-308), and a pseudo-source 1e10 mesh units
+/// away stays within 1e110 of the smallest face, whose collinearity products then stay below
+/// 1e221. docs/numerics.md has the argument step by step. A mesh with an edge 1e100 times
+/// shorter than its extent is refused by name ('edge-length-spread').
+inline constexpr double kMinEdgeLengthRel = 1e-100;
 
 /// Barycentric or edge parameters within this of 0 or 1 snap a source or target onto the
 /// edge or vertex it is on. Ten times kCoincideRel: a source nearer a vertex or an edge than

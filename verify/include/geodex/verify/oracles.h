@@ -33,6 +33,12 @@ namespace geodex::verify {
 /// point's two vertices share a face; does not snap or otherwise interpret p.
 Vec3 surfacePointPosition(const TriangleSoup& soup, const SurfacePoint& p);
 
+/// The mesh's soup in its mesh units (Mesh::unit(), exact), to compare with the solver's
+/// distances in mesh units: an oracle's own squares then neither under- nor overflow at any
+/// scale the solver accepts. A vertex no face uses and whose position leaves the range of doubles
+/// that way goes to the origin (it is no part of the geometry; its distance is +inf).
+TriangleSoup soupInMeshUnits(const Mesh& mesh);
+
 // === Euclidean lower bound =====================================================================
 
 /// Straight-line distance from `source` to each of `positions`.

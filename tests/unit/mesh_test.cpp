@@ -1,0 +1,155 @@
+// Mesh units (solver/src/mesh.cpp): geodex measures a mesh in a power of two of its largest
+// coordinate, so that a mesh scaled by 2^k has the same geometry in mesh units bit for bit, and
+// every answer — distances, points, paths, stop distance, targets, counters — is the unscaled
+// one times 2^k, exactly. Expected values come from the unscaled solve and ldexp, never from
+// the scaled code path itself.
+#include "geodex/mesh.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "geodex/error.h"
+#include "geodex/geodesic_solver.h"
+#include "geodex/verify/mesh_generators.h"
+
+namespace geodex {
+namespace {
+
+TriangleSoup scaled(TriangleSoup soup, int k) {
+  for (Vec3& p : soup.positions) p = Vec3(std::ldexp(p.x(), k), std::ldexp(p.y(), k), std::ldexp(p.z(), k));
+  return soup;
+}
+
+// Whether every non-zero coordinate of the soup scaled by 2^k is a normal double (then the scaled
+// mesh is exactly the same mesh, and the answers must be exactly the same).
+bool staysNormal(const TriangleSoup& soup, int k) {
+  for (const Vec3& p : soup.positions)
+    for (int i = 0; i < 3; ++i)
+      if (p[i] != 0.0 && !std::isnormal(std::ldexp(p[i], k))) return false;
+  return true;
+}
+
+// A bumpy height field (saddles, convex and flat vertices, a boundary) with a few hand-picked
+// quirks: exactly representable coordinates are not needed, rounding is part of the test.
+TriangleSoup bumpyMesh() {
+  return verify::heightFieldMesh(6, 5, 1.7, 1.3, [](double x, double y) {
+    return 0.3 * std::sin(3.1 * x) * std::cos(2.3 * y) + 0.05 * x * y;
+  });
+}
+
+struct Answers {
+  std::vector<double> vertex;
+  double edgePoint, facePoint, pathLength;
+  std::vector<Vec3> pathPoints;
+  DegeneracyCounters counters;
+  SolveStats stats;
+};
+
+Answers solveAll(const Mesh& mesh, const SolveOptions& options = {}) {
+  const std::vector<SurfacePoint> sources{SurfacePoint::atVertex(3),
+                                          SurfacePoint::onEdge(15, 16, 0.375),
+                                          SurfacePoint::inFace(40, 0.2, 0.3, 0.5)};
+  GeodesicSolver solver(mesh);
+  solver.solve(sources, options);
+  Answers a;
+  a.vertex.assign(solver.vertexDistances().begin(), solver.vertexDistances().end());
+  a.edgePoint = solver.distance(SurfacePoint::onEdge(11, 12, 0.625));
+  a.facePoint = solver.distance(SurfacePoint::inFace(17, 0.5, 0.25, 0.25));
+  const GeodesicPath path = solver.path(SurfacePoint::atVertex(41));
+  a.pathLength = path.length;
+  for (const PathPoint& p : path.points) a.pathPoints.push_back(p.position);
+  a.counters = solver.counters();
+  a.stats = solver.stats();
+  return a;
+}
+
+void expectScaledBitForBit(const Answers& unit, const Answers& got, int k) {
+  ASSERT_EQ(got.vertex.size(), unit.vertex.size());
+  for (std::size_t v = 0; v < got.vertex.size(); ++v)
+    EXPECT_EQ(got.vertex[v], std::ldexp(unit.vertex[v], k)) << "2^" << k << " vertex " << v;
+  EXPECT_EQ(got.edgePoint, std::ldexp(unit.edgePoint, k)) << "2^" << k;
+  EXPECT_EQ(got.facePoint, std::ldexp(unit.facePoint, k)) << "2^" << k;
+  EXPECT_EQ(got.pathLength, std::ldexp(unit.pathLength, k)) << "2^" << k;
+  ASSERT_EQ(got.pathPoints.size(), unit.pathPoints.size()) << "2^" << k;
+  for (std::size_t i = 0; i < got.pathPoints.size(); ++i)
+    for (int c = 0; c < 3; ++c)
+      EXPECT_EQ(got.pathPoints[i][c], std::ldexp(unit.pathPoints[i][c], k)) << "2^" << k << " point " << i;
+  EXPECT_EQ(got.counters.count, unit.counters.count) << "2^" << k;
+  EXPECT_EQ(got.counters.cases, unit.counters.cases) << "2^" << k;
+  EXPECT_EQ(got.counters.zeroAreaFaces, unit.counters.zeroAreaFaces) << "2^" << k;
+  EXPECT_EQ(got.counters.childEdgesSeenFromOutside, unit.counters.childEdgesSeenFromOutside);
+  EXPECT_EQ(got.stats.intervalsCreated, unit.stats.intervalsCreated) << "2^" << k;
+  EXPECT_EQ(got.stats.intervalsPropagated, unit.stats.intervalsPropagated) << "2^" << k;
+  EXPECT_EQ(got.stats.shadowsClosed, unit.stats.shadowsClosed) << "2^" << k;
+  EXPECT_EQ(got.stats.radius, std::ldexp(unit.stats.radius, k)) << "2^" << k;
+}
+
+const int kScales[] = {-1000, -900, -600, -300, -100, -77, -1, 1, 77, 100, 300, 600, 900, 1000};
+
+TEST(MeshUnits, EveryAnswerOfAMeshScaledByAPowerOfTwoIsTheUnscaledOneScaledBitForBit) {
+  const TriangleSoup soup = bumpyMesh();
+  const Answers unit = solveAll(Mesh(soup));
+  for (const int k : kScales) {
+    if (!staysNormal(soup, k)) continue;
+    const Mesh mesh(scaled(soup, k));
+    expectScaledBitForBit(unit, solveAll(mesh), k);
+  }
+}
+
+TEST(MeshUnits, StopDistanceAndTargetsScaleBitForBit) {
+  const TriangleSoup soup = bumpyMesh();
+  SolveOptions stop;
+  stop.stopDistance = 0.75;
+  SolveOptions targets;
+  targets.targets = {SurfacePoint::atVertex(30), SurfacePoint::onEdge(7, 8, 0.5)};
+  const Answers unitStop = solveAll(Mesh(soup), stop);
+  const Answers unitTargets = solveAll(Mesh(soup), targets);
+  ASSERT_GT(std::count(unitStop.vertex.begin(), unitStop.vertex.end(), kInfinity), 0);
+  for (const int k : kScales) {
+    if (!staysNormal(soup, k)) continue;
+    const Mesh mesh(scaled(soup, k));
+    SolveOptions scaledStop = stop;
+    scaledStop.stopDistance = std::ldexp(stop.stopDistance, k);
+    expectScaledBitForBit(unitStop, solveAll(mesh, scaledStop), k);
+    expectScaledBitForBit(unitTargets, solveAll(mesh, targets), k);
+  }
+}
+
+TEST(MeshUnits, TheUnitIsTheLargestCoordinateOfTheVerticesFacesUse) {
+  TriangleSoup soup = bumpyMesh();
+  const Mesh plain(soup);
+  EXPECT_EQ(plain.unit(), 1.0);  // the largest coordinate is 1.7
+  soup.positions.emplace_back(1e300, -1e300, 0.0);  // used by no face: no part of the geometry
+  const Mesh withFarVertex(soup);
+  EXPECT_EQ(withFarVertex.unit(), 1.0);
+  EXPECT_EQ(withFarVertex.boundingBoxDiagonal(), plain.boundingBoxDiagonal());
+  EXPECT_EQ(exactGeodesicDistance(withFarVertex, std::vector{SurfacePoint::atVertex(0)}).back(), kInfinity);
+}
+
+TEST(MeshUnits, ADistanceBeyondTheLargestDoubleIsAnErrorNotInfinity) {
+  // Two strips 1.7e308 long folded into a U: every edge is a finite double, but the way from one
+  // end of the U to the other is 3.4e308. +inf would say "unreachable": it must be refused.
+  TriangleSoup soup;
+  soup.positions = {Vec3(0, 0, 0),           Vec3(0, 0, 1e306),          // a0, a1
+                    Vec3(1.7e308, 0, 0),     Vec3(1.7e308, 0, 1e306),    // b0, b1 (the bend)
+                    Vec3(0, 1e306, 0),       Vec3(0, 1e306, 1e306)};     // c0, c1
+  soup.faces = {{0, 2, 3}, {0, 3, 1}, {2, 4, 5}, {2, 5, 3}};
+  const Mesh mesh(soup);
+  GeodesicSolver solver(mesh);
+  try {
+    solver.solve(std::vector{SurfacePoint::atVertex(0)});
+    ADD_FAILURE() << "distance to vertex 4 is " << solver.vertexDistances()[4];
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.kind(), "distance-overflow") << e.what();
+    EXPECT_NE(std::string(e.what()).find("largest double"), std::string::npos) << e.what();
+  }
+  // From the bend every distance is representable.
+  solver.solve(std::vector{SurfacePoint::atVertex(2)});
+  EXPECT_NEAR(solver.vertexDistances()[0], 1.7e308, 1e294);
+}
+
+}  // namespace
+}  // namespace geodex
