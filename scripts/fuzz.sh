@@ -4,7 +4,7 @@
 #   scripts/fuzz.sh [SECONDS_PER_TARGET] [TARGET...]      default: 60 s, all six targets
 #
 # Configures and builds the `fuzz` preset (clang, ASan + UBSan, libFuzzer; the fuzz targets only),
-# then per target: fuzzes with 2 forked workers on its corpus (build/fuzz-work/<target>/corpus,
+# then per target: fuzzes with 2 forked workers (GEODEX_FUZZ_WORKERS) on its corpus (build/fuzz-work/<target>/corpus,
 # started from corpus/<target>/seed and the fixed-bug reproducers in regress/), merges the inputs
 # that added coverage into that work corpus, minimizes every crash (-minimize_crash=1) into
 # build/fuzz-findings/<target>/<check>-<hash> (one per failed check per run), and prints:
@@ -13,6 +13,8 @@
 #   build/fuzz/bin/<target> FILE        or        geodex repro FILE
 # Known open bugs (corpus/<target>/regress/open-*) are not seeded; to fuzz on past one, name its
 # check in GEODEX_FUZZ_SKIP_CHECKS (comma-separated), e.g. GEODEX_FUZZ_SKIP_CHECKS=path-length.
+# GEODEX_FUZZ_WORKERS (default 2) sets the forked workers per target, e.g. 1 to run two campaigns
+# side by side on two cores.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
@@ -22,6 +24,7 @@ if [[ $# -gt 0 && $1 =~ ^[0-9]+$ ]]; then
   shift
 fi
 targets=("$@")
+workers=${GEODEX_FUZZ_WORKERS:-2}
 if [[ ${#targets[@]} -eq 0 ]]; then
   targets=(fuzz_mesh_io fuzz_predicates fuzz_edge_update fuzz_propagation fuzz_two_faces fuzz_solver)
 fi
@@ -50,10 +53,10 @@ for target in "${targets[@]}"; do
   [[ -f fuzz/$target.dict ]] && dict=(-dict="fuzz/$target.dict")
 
   echo
-  echo "=== $target: ${budget} s, 2 forked workers"
+  echo "=== $target: ${budget} s, $workers forked workers"
   # -fork with -ignore_crashes keeps fuzzing past a finding (the open bugs of regress/open-* are
   # found again within seconds; -jobs workers would stop at the first one).
-  "$bin" -fork=2 -ignore_crashes=1 -max_total_time="$budget" -timeout=10 -rss_limit_mb=2048 \
+  "$bin" -fork="$workers" -ignore_crashes=1 -max_total_time="$budget" -timeout=10 -rss_limit_mb=2048 \
     "${dict[@]}" -max_len="$max_len" -artifact_prefix="$work/artifacts/" -print_final_stats=1 \
     "$work/new" "$work/corpus" >"$work/fuzz.log" 2>&1 || true
 

@@ -143,6 +143,56 @@ RC_GTEST_PROP(Metamorphic, UniformScalingScalesDistancesAndKeepsDecisions, ()) {
   }
 }
 
+// Across the whole range of doubles (docs/numerics.md): every generated mesh scaled by any power
+// of two that keeps its coordinates normal numbers is the same run, bit for bit — distances and
+// every counter; scaled by any power of ten a double holds, the same distances up to the input's
+// rounding. (The 2^±20 case above is one point of this.)
+RC_GTEST_PROP(Metamorphic, ScalingByAnyPowerOfTwoIsTheSameRunBitForBit, ()) {
+  const MeshCase mc = *gen::meshCase();
+  const Mesh mesh(mc.soup);
+  const SourceCase src = *gen::sourcePoint(mesh);
+  const int k = *rc::gen::inRange(-1000, 1001);
+  TriangleSoup scaledSoup = mc.soup;
+  for (Vec3& p : scaledSoup.positions)
+    for (int i = 0; i < 3; ++i) {
+      p[i] = std::ldexp(p[i], k);
+      RC_PRE(p[i] == 0.0 || std::isnormal(p[i]));
+    }
+  RC_TAG(mc.family, k < -300 ? "2^k, k < -300" : (k > 300 ? "2^k, k > 300" : "2^k, |k| <= 300"));
+  const Solved base = solveChecked(mesh, {src.point});
+  const Solved s = solveChecked(Mesh(scaledSoup), {src.point});
+  for (std::size_t v = 0; v < base.distances.size(); ++v) {
+    if (s.distances[v] != std::ldexp(base.distances[v], k)) {
+      std::ostringstream os;
+      os.precision(17);
+      os << "scaled by 2^" << k << ", vertex " << v << " has " << s.distances[v] << " instead of "
+         << std::ldexp(base.distances[v], k) << " (" << base.distances[v] << " x 2^" << k << ")";
+      RC_FAIL(os.str());
+    }
+  }
+  if (s.counters.count != base.counters.count || s.counters.cases != base.counters.cases)
+    RC_FAIL("scaled by 2^" + std::to_string(k) + " the counts changed: " + describeCounters(base.counters) +
+            " became " + describeCounters(s.counters));
+}
+
+RC_GTEST_PROP(Metamorphic, ScalingByAnyPowerOfTenScalesDistances, ()) {
+  const MeshCase mc = *gen::meshCase();
+  const Mesh mesh(mc.soup);
+  const SourceCase src = *gen::sourcePoint(mesh);
+  const int k = *rc::gen::inRange(-250, 251);
+  const double factor = std::pow(10.0, k);
+  TriangleSoup scaledSoup = mc.soup;
+  for (Vec3& p : scaledSoup.positions) p *= factor;
+  RC_TAG(mc.family);
+  const Solved base = solveChecked(mesh, {src.point});
+  Solved s = solveChecked(Mesh(scaledSoup), {src.point});
+  for (double& d : s.distances) d /= factor;
+  const double diag = mesh.boundingBoxDiagonal();
+  recordAccuracy("scaling by 10^k", maxDifference(s.distances, base.distances) / diag);
+  if (!(maxDifference(s.distances, base.distances) <= kTwoSolves * diag))
+    RC_FAIL(mismatch(("scaled by 1e" + std::to_string(k)).c_str(), s.distances, base.distances, diag));
+}
+
 // ===  Relabelling and reordering =================================================================
 
 std::vector<Index> shuffled(std::size_t n, std::uint64_t seed) {

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <sstream>
 
 #include "geodex/error.h"
@@ -40,6 +41,20 @@ TEST(CheckOracles, MetamorphicFailsOnAPerturbedField) {
   EXPECT_GT(metamorphicOracle(s.mesh, s.sources, bad).failed, 0u);
 }
 
+// The powers-of-two scalings are compared bit for bit: one ulp at one vertex, far below every
+// other comparison's tolerance, fails each of them and nothing else.
+TEST(CheckOracles, MetamorphicScalingByPowersOfTwoIsBitForBit) {
+  Solved s(icosphereMesh(1, 1.0), {SurfacePoint::atVertex(0)});
+  const OracleResult good = metamorphicOracle(s.mesh, s.sources, s.d);
+  EXPECT_EQ(good.failed, 0u) << good.firstFailure;
+  std::vector<double> bad = s.d;
+  bad[20] = std::nextafter(bad[20], INFINITY);
+  const OracleResult r = metamorphicOracle(s.mesh, s.sources, bad);
+  EXPECT_EQ(r.failed, 6u);  // vertex 20 at 2^±1000, 2^±600, 2^±100
+  EXPECT_NE(r.firstFailure.find("scale 2^-1000: vertex 20"), std::string::npos) << r.firstFailure;
+  EXPECT_NE(r.firstFailure.find("bit for bit"), std::string::npos) << r.firstFailure;
+}
+
 TEST(CheckOracles, SymmetryFailsOnAPerturbedField) {
   Solved s(icosphereMesh(2, 1.0), {SurfacePoint::atVertex(0)});
   EXPECT_EQ(symmetryOracle(s.mesh, s.sources[0], s.d).failed, 0u);
@@ -67,6 +82,24 @@ TEST(CheckOracles, ExactPredicatesCatchAWrongDecision) {
   // Within a few ε of G2 the exact tree cannot judge the ε decision.
   const LocalWindow nearG2{2.0, Vec2(1.0, 1.0), 0.5, 1.5, Vec2(1e-12, -1.0)};
   EXPECT_FALSE(judgeFig6(nearG2, Fig6Branch::G2, agrees));
+}
+
+// The judge's "clearly decided" margin is a ratio of lengths: the same configuration at any
+// power-of-two scale is judged alike (at 2^±600 its cross products once under- or overflowed).
+TEST(CheckOracles, ExactPredicatesJudgeAlikeAtEveryScale) {
+  const LocalWindow cases[] = {{2.0, Vec2(1.0, 1.0), 0.5, 1.5, Vec2(1.0, -1.0)},
+                               {2.0, Vec2(1.0, 1.0), 0.5, 1.5, Vec2(1e-12, -1.0)}};
+  for (const LocalWindow& w : cases) {
+    bool agrees = false;
+    const bool judged = judgeFig6(w, Fig6Branch::InsideWedge, agrees);
+    for (const int k : {-1000, -600, -300, 300, 600, 1000}) {
+      const double f = std::ldexp(1.0, k);
+      const LocalWindow s{w.edgeLength * f, w.apex * f, w.b0 * f, w.b1 * f, w.source * f};
+      bool scaledAgrees = false;
+      EXPECT_EQ(judgeFig6(s, Fig6Branch::InsideWedge, scaledAgrees), judged) << "2^" << k;
+      EXPECT_EQ(scaledAgrees, agrees) << "2^" << k;
+    }
+  }
 }
 
 TEST(CheckRun, AGridPassesEverythingAndReportsJson) {

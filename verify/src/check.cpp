@@ -81,6 +81,21 @@ std::vector<double> solveOn(const TriangleSoup& soup, const std::vector<SurfaceP
   return exactGeodesicDistance(mesh, sources);
 }
 
+// Compares a re-solve of the mesh scaled by 2^k with the original: equal × 2^k, bit for bit.
+void compareBitForBit(OracleResult& r, const std::string& what, std::span<const double> original,
+                      std::span<const double> other, int k) {
+  for (std::size_t v = 0; v < original.size(); ++v) {
+    const double want = std::ldexp(original[v], k), got = other[v];
+    ++r.checked;
+    if (got == want) continue;
+    ++r.failed;
+    r.maxError = std::max(r.maxError, std::isfinite(want) && want != 0.0 ? std::abs(got / want - 1.0) : INFINITY);
+    if (r.firstFailure.empty())
+      r.firstFailure = what + ": vertex " + std::to_string(v) + " has " + fmt(got) + " instead of " + fmt(want) +
+                       " (bit for bit)";
+  }
+}
+
 // Compares a re-solve's per-vertex distances (already mapped back) with the original.
 void compareFields(OracleResult& r, const std::string& what, std::span<const double> original,
                    std::span<const double> other, double factor, double diag) {
@@ -116,6 +131,26 @@ void metamorphicInto(OracleResult& r, const Mesh& mesh, const std::vector<Surfac
     TriangleSoup scaled = soup;
     for (Vec3& p : scaled.positions) p *= factor;
     compareFields(r, "scale " + fmt(factor), d, solveOn(scaled, sources), factor, diag);
+  }
+  // Across the whole range of doubles (docs/numerics.md): by powers of two the same distances bit
+  // for bit, wherever every scaled coordinate is still a normal number (or zero); by powers of
+  // ten (rounded) the same up to the input's rounding. (`mesh` comes in mesh units, its largest
+  // coordinate in [1, 2), so 2^±1000 is inside the range.)
+  for (const int k : {-1000, -600, -100, 100, 600, 1000}) {
+    TriangleSoup scaled = soup;
+    bool normal = true;
+    for (Vec3& p : scaled.positions)
+      for (int i = 0; i < 3; ++i) {
+        p[i] = std::ldexp(p[i], k);
+        normal = normal && (p[i] == 0.0 || std::isnormal(p[i]));
+      }
+    if (normal) compareBitForBit(r, "scale 2^" + std::to_string(k), d, solveOn(scaled, sources), k);
+  }
+  for (const int k : {-250, -80, 80, 250}) {
+    const double factor = std::pow(10.0, k);
+    TriangleSoup scaled = soup;
+    for (Vec3& p : scaled.positions) p *= factor;
+    compareFields(r, "scale 1e" + std::to_string(k), d, solveOn(scaled, sources), factor, diag);
   }
   // Vertex relabelling (reversed order) and face reordering (reversed order).
   {

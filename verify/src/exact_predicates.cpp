@@ -22,17 +22,31 @@ mpq_class crossAt(const Q2& a, const Q2& b, const Q2& c) {
   return (b.x - a.x) * (c.y - b.y) - (b.y - a.y) * (c.x - b.x);
 }
 
+// The configuration with its face scaled to about unit size by a power of two, for the margin's
+// floating-point sines and ratios: at 1e-160 a cross product of two face-sized vectors is
+// subnormal, at 1e160 it overflows, and the margin then says nothing.
+LocalWindow atUnitScale(const LocalWindow& w) {
+  const double size = std::max({w.edgeLength, std::abs(w.apex.x()), std::abs(w.apex.y())});
+  if (!(size > 0.0 && std::isfinite(size))) return w;
+  const double k = std::ldexp(1.0, -std::ilogb(size));
+  return {w.edgeLength * k, w.apex * k, w.b0 * k, w.b1 * k, w.source * k};
+}
+
 }  // namespace
 
-ExactFig6 exactFig6(const LocalWindow& w) {
+ExactFig6 exactFig6(const LocalWindow& unscaled) {
+  const LocalWindow w = atUnitScale(unscaled);
   const double scale = localScale(w);
   const double coincide = tol::kCoincideRel * scale;
   double margin = std::numeric_limits<double>::infinity();
   // Each test: value and the ε the floating-point tree compares it with.
   auto note = [&](double value, double eps) { margin = std::min(margin, std::abs(value) / eps); };
 
-  const Q2 v0{0, 0}, v2{mpq_class(w.edgeLength), 0}, v1 = exact(w.apex), s = exact(w.source);
-  const Q2 b0{mpq_class(w.b0), 0}, b1{mpq_class(w.b1), 0};
+  // The decisions on the input itself (rationals are exact at any scale); the margins, in
+  // doubles, on w.
+  const Q2 v0{0, 0}, v2{mpq_class(unscaled.edgeLength), 0}, v1 = exact(unscaled.apex),
+           s = exact(unscaled.source);
+  const Q2 b0{mpq_class(unscaled.b0), 0}, b1{mpq_class(unscaled.b1), 0};
 
   note(w.apex.y(), tol::kFlatFaceRel * scale);
   if (sign(v1.y) == 0) return {Fig6Branch::ZeroAreaFace, margin};

@@ -159,7 +159,14 @@ double fieldValue(const Quantity& q, long lo, long hi, double unit, double lengt
   return latticeValue(q, lo, hi) * unit + nudgeValue(q, lengthScale);
 }
 
-double unitOf(std::int8_t unitExp) { return std::ldexp(1.0, wrapInt(unitExp, -20, 20)); }
+/// The case's length unit 2^e: e = unitExp within ±20, beyond that 8 × unitExp up to ±1000, so
+/// that the decoders reach every scale a double holds. Every field is a multiple of the unit, so
+/// two units give the same case scaled exactly, and the solver decides it the same way bit for
+/// bit (docs/numerics.md): the scale is a property under test, not a new configuration.
+double unitOf(std::int8_t unitExp) {
+  const int e = unitExp >= -20 && unitExp <= 20 ? unitExp : std::clamp(8 * unitExp, -1000, 1000);
+  return std::ldexp(1.0, e);
+}
 
 /// Edge length (world) and its lattice extent nL.
 struct LatticeLength {
