@@ -95,32 +95,29 @@ std::optional<double> forwardHit(const Vec2& s, const Vec2& q, const Vec2& a, co
 
 }  // namespace
 
-namespace {
-
-// The configuration scaled by a power of two (exact) when its face is far from unit size, so that
-// the collinearity tests' products of four lengths (sideOfRay) neither under- nor overflow: a
-// face at 1e-106 decided G2 where the exact tree says G3
-// (corpus/fuzz_propagation/regress/exact-predicates-face-at-1e-106-fourth-powers-underflow).
-// The children are parameters along e1 and e2, which the scaling does not change. Inside the
-// band the configuration is used as it is: scaling by a power of two commutes with every
-// operation here (the square roots are of squares), so either way gives the same bits.
 LocalWindow atUnitScale(const LocalWindow& w) {
-#ifdef GEODEX_NO_MESH_UNITS  // bench-only build (solver/CMakeLists.txt)
-  return w;
-#endif
-  constexpr double kLow = 0x1p-100, kHigh = 0x1p100;
-  constexpr double kInfinitySize = std::numeric_limits<double>::infinity();
-  const double size = std::max({w.edgeLength, std::abs(w.apex.x()), w.apex.y()});
-  if ((size >= kLow && size <= kHigh) || !(size > 0.0 && size < kInfinitySize)) return w;
+  const double size = std::max({w.edgeLength, std::abs(w.apex.x()), std::abs(w.apex.y())});
+  if (!(size > 0.0 && size < std::numeric_limits<double>::infinity())) return w;
   const double k = std::ldexp(1.0, -std::ilogb(size));
   return {w.edgeLength * k, w.apex * k, w.b0 * k, w.b1 * k, w.source * k};
 }
 
-}  // namespace
-
 LocalPropagation propagateLocal(const LocalWindow& unscaled) {
   using pred::Side;
-  const LocalWindow w = atUnitScale(unscaled);
+  // A face far from unit size is decided at unit scale (atUnitScale), so that the collinearity
+  // tests' products of four lengths (sideOfRay) neither under- nor overflow: a face at 1e-106
+  // decided G2 where the exact tree says G3 (corpus/fuzz_propagation/regress/exact-predicates-
+  // face-at-1e-106-fourth-powers-underflow). Inside the band the configuration is used as it is:
+  // scaling by a power of two commutes with every operation here (the square roots are of
+  // squares) while no product leaves the normal range, so either way gives the same bits unless
+  // a value is 2^100 times smaller than the face — far below anything the solver keeps (D1).
+#ifdef GEODEX_NO_MESH_UNITS  // bench-only build (solver/CMakeLists.txt)
+  const LocalWindow& w = unscaled;
+#else
+  constexpr double kLow = 0x1p-100, kHigh = 0x1p100;
+  const double size = std::max({unscaled.edgeLength, std::abs(unscaled.apex.x()), unscaled.apex.y()});
+  const LocalWindow w = size >= kLow && size <= kHigh ? unscaled : atUnitScale(unscaled);
+#endif
   const Vec2 v0(0.0, 0.0), v2(w.edgeLength, 0.0), v1 = w.apex, s = w.source;
   const Vec2 b0(w.b0, 0.0), b1(w.b1, 0.0);
   const double scale = localScale(w);

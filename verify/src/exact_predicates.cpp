@@ -22,19 +22,11 @@ mpq_class crossAt(const Q2& a, const Q2& b, const Q2& c) {
   return (b.x - a.x) * (c.y - b.y) - (b.y - a.y) * (c.x - b.x);
 }
 
-// The configuration with its face scaled to about unit size by a power of two, for the margin's
-// floating-point sines and ratios: at 1e-160 a cross product of two face-sized vectors is
-// subnormal, at 1e160 it overflows, and the margin then says nothing.
-LocalWindow atUnitScale(const LocalWindow& w) {
-  const double size = std::max({w.edgeLength, std::abs(w.apex.x()), std::abs(w.apex.y())});
-  if (!(size > 0.0 && std::isfinite(size))) return w;
-  const double k = std::ldexp(1.0, -std::ilogb(size));
-  return {w.edgeLength * k, w.apex * k, w.b0 * k, w.b1 * k, w.source * k};
-}
-
 }  // namespace
 
 ExactFig6 exactFig6(const LocalWindow& unscaled) {
+  // The margin's floating-point sines and ratios on the configuration at unit scale: at 1e-160
+  // a cross product of two face-sized vectors is subnormal, at 1e160 it overflows.
   const LocalWindow w = atUnitScale(unscaled);
   const double scale = localScale(w);
   const double coincide = tol::kCoincideRel * scale;

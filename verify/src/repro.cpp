@@ -137,6 +137,23 @@ namespace {
 
 // ===  Field values ==============================================================================
 
+/// Whether x × k (k a power of two) is exact: x is zero, or x and the product are normal numbers.
+bool scalesExactly(double x, double k) { return x == 0.0 || (std::isnormal(x) && std::isnormal(x * k)); }
+
+/// Whether the Fig. 6 tree must decide w and its unit-scale copy u (atUnitScale) bit for bit
+/// alike: every value scales exactly, and each is zero or within 2^±100 of the face's size, so
+/// that no product of four of them (sideOfRay) leaves the normal range at either scale. (A window
+/// 1e-300 of its edge wide is far below what the solver keeps, D1; its crossings then round in
+/// the subnormal range, differently at each scale.)
+bool decidedAlikeAtUnitScale(const LocalWindow& w, const LocalWindow& u) {
+  const double k = u.edgeLength / w.edgeLength;  // a power of two
+  for (double x : {w.edgeLength, w.apex.x(), w.apex.y(), w.b0, w.b1, w.source.x(), w.source.y()}) {
+    if (!scalesExactly(x, k)) return false;
+    if (x != 0.0 && !(std::abs(x * k) >= 0x1p-100 && std::abs(x * k) <= 0x1p100)) return false;
+  }
+  return true;
+}
+
 int wrapInt(long v, long lo, long hi) {
   const long span = hi - lo + 1;
   return static_cast<int>(lo + ((v - lo) % span + span) % span);
@@ -1151,25 +1168,37 @@ Verdict checkPredicates(const PredicateCase& c) {
   }
   if (!exact.branch) v.summary += " (near: " + exact.nearWhat + ")";
 
+  // (d) the same case at unit scale (exact) is decided the same way, bit for bit; the checks
+  // below work on it, so that their own arithmetic holds at any scale the decoder reaches.
+  const LocalWindow u = atUnitScale(w);
+  if (decidedAlikeAtUnitScale(w, u)) {
+    const LocalPropagation atUnit = propagateLocal(u);
+    bool same = atUnit.branch == r.branch && atUnit.numChildren == r.numChildren;
+    for (int i = 0; same && i < r.numChildren; ++i)
+      same = atUnit.children[i].edge == r.children[i].edge && atUnit.children[i].t0 == r.children[i].t0 &&
+             atUnit.children[i].t1 == r.children[i].t1;
+    if (!same) return fail(v, "scale-invariance", "at unit scale " + describeResult(atUnit) + where());
+  }
+
   // (c) coverage and soundness. Along e0 (G1) and through a zero-area face the rays graze the
   // edges: the whole-edge children are the paper's contract there, nothing to sample.
   if (r.branch == Fig6Branch::ZeroAreaFace || r.branch == Fig6Branch::G1Inside ||
       r.branch == Fig6Branch::G1Outside)
     return v;
-  const Vec2 s = w.source, b0(w.b0, 0.0), b1(w.b1, 0.0);
-  const double scale = localScale(w);
-  const double kappa = wedgeSlack(w);
-  const Coverage coverage = wedgeCoverage(w, {r.children.data(), r.numChildren});
+  const Vec2 s = u.source, b0(u.b0, 0.0), b1(u.b1, 0.0);
+  const double scale = localScale(u);
+  const double kappa = wedgeSlack(u);
+  const Coverage coverage = wedgeCoverage(u, {r.children.data(), r.numChildren});
   if (coverage.imageBelowEpsilon) return v.summary += " (image below epsilon)", v;
   if (!coverage.uncovered.empty()) return fail(v, "coverage", coverage.uncovered + where());
   for (int i = 0; i < r.numChildren; ++i) {
     const LocalChild& ch = r.children[i];
     for (double t : {ch.t0, 0.5 * (ch.t0 + ch.t1), ch.t1}) {
-      const Vec2 y = childPoint(w, ch.edge, t);
+      const Vec2 y = childPoint(u, ch.edge, t);
       const Vec2 d = y - s;
       const double xStar = d.y() > 0.0 ? s.x() + d.x() * (-s.y()) / d.y() : y.x();
       const double slack = 1e-12 * scale;
-      if (xStar >= w.b0 - slack && xStar <= w.b1 + slack) continue;
+      if (xStar >= u.b0 - slack && xStar <= u.b1 + slack) continue;
       if (sinAngle(d, b0 - s) <= kappa || sinAngle(d, b1 - s) <= kappa) continue;
       std::ostringstream os;
       os << std::setprecision(17) << "the point t = " << t << " of the e" << int(ch.edge)
@@ -1268,10 +1297,7 @@ Verdict checkPropagation(const PropagationCase& input) {
   {
     const double k = unit.unit;
     const LocalWindow atScale{w.edgeLength * k, w.apex * k, w.b0 * k, w.b1 * k, w.source * k};
-    auto normalOrZero = [](double x) { return x == 0.0 || std::isnormal(x); };
-    if (normalOrZero(atScale.edgeLength) && normalOrZero(atScale.apex.x()) && normalOrZero(atScale.apex.y()) &&
-        normalOrZero(atScale.b0) && normalOrZero(atScale.b1) && normalOrZero(atScale.source.x()) &&
-        normalOrZero(atScale.source.y())) {
+    if (decidedAlikeAtUnitScale(atScale, atUnitScale(w))) {
       const LocalPropagation scaled = propagateLocal(atScale);
       bool same = scaled.branch == r.branch && scaled.numChildren == r.numChildren;
       for (int i = 0; same && i < r.numChildren; ++i) {
@@ -1401,8 +1427,33 @@ bool sameFunction(const Interval& a, const Interval& b) {
 
 }  // namespace
 
-Verdict checkEdgeUpdate(const EdgeUpdateCase& c) {
+/// The case in mesh units, as a mesh holding the edge would have it (MeshUnit): Algorithm 2
+/// computes σ + √((x − s.x)² + s.y²) and runs on the solver's lengths, never on a file's 1e157.
+/// Nullopt when a value would not scale exactly (it is or becomes subnormal: 1e-328 of its edge,
+/// far below anything the solver keeps).
+std::optional<EdgeUpdateCase> inMeshUnits(const EdgeUpdateCase& c) {
+  const MeshUnit unit = meshUnitOf(c.edgeLength);
+  bool exact = true;
+  auto to = [&](double& x) {
+    exact = exact && scalesExactly(x, unit.inverse);
+    x *= unit.inverse;
+  };
+  EdgeUpdateCase m = c;
+  to(m.edgeLength);
+  auto scale = [&](Interval& w) {
+    to(w.b0), to(w.b1), to(w.source.x()), to(w.source.y()), to(w.sigma);
+  };
+  for (Interval& w : m.before) scale(w);
+  scale(m.incoming);
+  if (!exact) return std::nullopt;
+  return m;
+}
+
+Verdict checkEdgeUpdate(const EdgeUpdateCase& input) {
   Verdict v;
+  const auto inUnits = inMeshUnits(input);
+  if (!inUnits) return v.summary = "a value would be subnormal in mesh units: outside the solver's range", v;
+  const EdgeUpdateCase& c = *inUnits;
   v.interesting = true;
   EdgeIntervals list;
   list.assign(c.before);

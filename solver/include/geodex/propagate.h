@@ -72,6 +72,12 @@ LocalPropagation propagateLocal(const LocalWindow& w);
 /// The local length scale the predicates of one case are relative to: the face's longest edge.
 double localScale(const LocalWindow& w);
 
+/// The same configuration scaled by a power of two so that its face's largest coordinate lies in
+/// [1, 2): exact while nothing leaves the normal range, and the children (parameters along e1
+/// and e2) are the same. What propagateLocal decides a face far from unit size on, and what a
+/// check computes its own geometry on at any scale. (A zero or non-finite size: w as it is.)
+LocalWindow atUnitScale(const LocalWindow& w);
+
 // ===  From a LocalChild to an Interval on the child edge =======================================
 
 /// Whether the children of a propagation across this face lie on one line with e0: the apex is
