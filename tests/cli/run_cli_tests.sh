@@ -315,6 +315,37 @@ case_info() {
   expect_out '^boundary edges: 8$'
 }
 
+# What geodex cannot compute with is refused by name, file, line, face and edge, exit 2; a mesh at
+# either end of the range of doubles is solved (docs/numerics.md).
+case_scale_refusals() {
+  printf 'OFF\n3 1 0\n0 0 0\n1e-120 0 0\n0 1 0\n3 0 1 2\n' >"$WORK/spread.off"
+  run distance "$WORK/spread.off" --source v:0
+  expect_usage_error
+  expect_err 'spread\.off:6: face 0: edge 0-1 is 1e-120 times'
+  expect_err 'remove or weld the tiny edge'
+  printf 'OFF\n3 1 0\n0 0 0\n1e-310 0 0\n0 1e-310 0\n3 0 1 2\n' >"$WORK/subnormal.off"
+  run distance "$WORK/subnormal.off" --source v:0
+  expect_usage_error
+  expect_err 'subnormal\.off:6: face 0: edge 0-1 has length .* below the smallest normal double'
+  printf 'OFF\n3 1 0\n0 0 0\n1.5e308 0 0\n0 1.5e308 0\n3 0 1 2\n' >"$WORK/overflow.off"
+  run distance "$WORK/overflow.off" --source v:0
+  expect_usage_error
+  expect_err 'overflow\.off:6: face 0: edge 1-2 has length .* beyond the largest double'
+  # A U of two strips 1.7e308 long: every edge fits a double, the distance around does not.
+  printf 'OFF\n6 4 0\n0 0 0\n0 0 1e306\n1.7e308 0 0\n1.7e308 0 1e306\n0 1e306 0\n0 1e306 1e306\n3 0 2 3\n3 0 3 1\n3 2 4 5\n3 2 5 3\n' >"$WORK/u.off"
+  run distance "$WORK/u.off" --source v:0
+  expect_usage_error
+  expect_err 'distance-overflow|beyond the largest double'
+  run distance "$WORK/u.off" --source v:2
+  expect_rc 0
+  printf 'OFF\n4 2 0\n0 0 0\n1e-300 0 0\n1e-300 1e-300 0\n0 1e-300 0\n3 0 1 2\n3 0 2 3\n' >"$WORK/tiny.off"
+  run distance "$WORK/tiny.off" --source v:0
+  expect_rc 0
+  # (the diagonal: Python's math.hypot(1e-300, 1e-300), correctly rounded, printed with %.17g)
+  [[ $(line "$OUT" 2) == 1e-300 ]] || fail "a side of a 1e-300 square should be 1e-300"
+  [[ $(line "$OUT" 3) == 1.414213562373095e-300 ]] || fail "the diagonal of a 1e-300 square should be 1.414213562373095e-300"
+}
+
 ALL_CASES=$(declare -F | awk '{print $3}' | sed -n 's/^case_//p')
 
 if [[ $CASE == all ]]; then
