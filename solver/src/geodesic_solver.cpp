@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <string>
-#include <string_view>
 
 #include "geodex/check.h"
 #include "geodex/error.h"
@@ -66,7 +66,12 @@ void GeodesicSolver::solve(std::span<const SurfacePoint> sources, const SolveOpt
   GEODEX_REQUIRE(!std::isnan(options.stopDistance), "stop distance is NaN");
   // Everything below is in mesh units (Mesh::unit(), a power of two: the division is exact).
   SolveOptions inMeshUnits;
-  inMeshUnits.stopDistance = options.stopDistance * mesh_.meshUnit().inverse;
+  // A stop beyond the largest double in mesh units stops nothing (tested first: no overflow trap).
+  const MeshUnit& unit = mesh_.meshUnit();
+  inMeshUnits.stopDistance = inFileUnitsRange(options.stopDistance, {-unit.exponent, unit.inverse, unit.unit}) ==
+                                     ScaledRange::Overflow
+                                 ? kInfinity
+                                 : options.stopDistance * unit.inverse;
   std::vector<ResolvedPoint> resolvedSources, targets;
   for (const SurfacePoint& p : sources) resolvedSources.push_back(resolve(mesh_, p));
   for (const SurfacePoint& p : options.targets) targets.push_back(resolve(mesh_, p));
@@ -405,7 +410,10 @@ void GeodesicSolver::updateVertex(Index v, double d) {
 
 void GeodesicSolver::finish(const SolveOptions& options, double radius) {
   radius_ = radius;
-  stats_.radius = radius * mesh_.unit();
+  const MeshUnit& unit = mesh_.meshUnit();
+  // (A radius that overflows in file units is refused below; the observers see a finite one.)
+  const bool radiusOverflows = inFileUnitsRange(radius, unit) == ScaledRange::Overflow;
+  stats_.radius = radiusOverflows ? std::numeric_limits<double>::max() : radius * unit.unit;
   const double cutoff = std::min(radius, options.stopDistance);
   // The wavefront has passed every distance up to the cutoff: a thin gap left there is a shadow
   // between windows that meet along a ray through a vertex up to rounding (tol::kShadowSewRel).
@@ -421,30 +429,46 @@ void GeodesicSolver::finish(const SolveOptions& options, double radius) {
   }
   stats_.intervalsAtEnd = total;
   stats_.maxIntervalsPerEdge = most;
+  // A distance beyond the largest double in file units is refused only after the observers have
+  // checked the solve in mesh units, so a refusal always comes from checked numbers.
+  Index overflowing = kNoIndex;
   vertexDistanceInFileUnits_.clear();
-  if (mesh_.unit() != 1.0) {
+  if (unit.unit != 1.0) {
     vertexDistanceInFileUnits_.resize(vertexDistance_.size());
-    for (Index v = 0; v < vertexDistance_.size(); ++v)
-      vertexDistanceInFileUnits_[v] = inFileUnits(vertexDistance_[v], "vertex", v);
+    for (Index v = 0; v < vertexDistance_.size(); ++v) {
+      if (inFileUnitsRange(vertexDistance_[v], unit) == ScaledRange::Overflow) {
+        if (overflowing == kNoIndex) overflowing = v;
+        vertexDistanceInFileUnits_[v] = kInfinity;
+        continue;
+      }
+      vertexDistanceInFileUnits_[v] = vertexDistance_[v] * unit.unit;
+    }
   }
   if (hooked()) observer_->onFinish(*this);
+  if (overflowing != kNoIndex) throwDistanceOverflow(vertexDistance_[overflowing], overflowing);
+  if (radiusOverflows) throwDistanceOverflow(radius, kNoIndex);
 }
 
 // ===  Queries ====================================================================================
 double GeodesicSolver::distance(const SurfacePoint& p) const {
-  return inFileUnits(resolvedDistance(resolve(mesh_, p)), "point", 0);
+  return inFileUnits(distanceInMeshUnits(p));
 }
 
-double GeodesicSolver::inFileUnits(double d, const char* what, std::size_t which) const {
-  const double scaled = d * mesh_.unit();  // exact, unless it overflows (or leaves the normals)
-  if (std::isfinite(d) && !std::isfinite(scaled)) {
-    std::ostringstream os;
-    os << "the distance of " << what << (std::string_view(what) == "vertex" ? " " + std::to_string(which) : "")
-       << " is 2^" << mesh_.meshUnit().exponent << " x " << d
-       << ", beyond the largest double (1.8e308); scale the mesh down";
-    throw InputError("distance-overflow", os.str());
-  }
-  return scaled;
+double GeodesicSolver::distanceInMeshUnits(const SurfacePoint& p) const {
+  return resolvedDistance(resolve(mesh_, p));
+}
+
+double GeodesicSolver::inFileUnits(double d) const {
+  if (inFileUnitsRange(d, mesh_.meshUnit()) == ScaledRange::Overflow) throwDistanceOverflow(d, kNoIndex);
+  return d * mesh_.unit();  // exact, but below the smallest normal double (then rounded)
+}
+
+void GeodesicSolver::throwDistanceOverflow(double d, Index vertex) const {
+  std::ostringstream os;
+  os << (vertex == kNoIndex ? std::string("a distance") : "the distance of vertex " + std::to_string(vertex))
+     << " is 2^" << mesh_.meshUnit().exponent << " x " << d
+     << ", beyond the largest double (1.8e308); scale the mesh down";
+  throw InputError("distance-overflow", os.str());
 }
 
 double GeodesicSolver::resolvedDistance(const ResolvedPoint& p) const {

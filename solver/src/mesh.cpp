@@ -316,12 +316,22 @@ MeshUnit meshUnitOf(double largestCoordinate) {
   return {exponent, std::ldexp(1.0, exponent), std::ldexp(1.0, -exponent)};
 }
 
+ScaledRange inFileUnitsRange(double x, const MeshUnit& unit) {
+  if (x == 0.0 || !std::isfinite(x)) return ScaledRange::Normal;
+  const int exponent = std::ilogb(x) + unit.exponent;  // of x × 2^unit.exponent, exactly
+  if (exponent > std::numeric_limits<double>::max_exponent - 1) return ScaledRange::Overflow;
+  if (exponent < std::numeric_limits<double>::min_exponent - 1) return ScaledRange::Subnormal;
+  return ScaledRange::Normal;
+}
+
 EdgeLengthProblem edgeLengthProblem(double lengthInMeshUnits, const MeshUnit& unit) {
   if (!(lengthInMeshUnits >= tol::kMinEdgeLengthRel)) return EdgeLengthProblem::Spread;
-  const double length = lengthInMeshUnits * unit.unit;
-  if (!(length >= std::numeric_limits<double>::min())) return EdgeLengthProblem::Subnormal;
-  if (!(length <= std::numeric_limits<double>::max())) return EdgeLengthProblem::Overflow;
-  return EdgeLengthProblem::None;
+  switch (inFileUnitsRange(lengthInMeshUnits, unit)) {
+    case ScaledRange::Subnormal: return EdgeLengthProblem::Subnormal;
+    case ScaledRange::Overflow: return EdgeLengthProblem::Overflow;
+    case ScaledRange::Normal: break;
+  }
+  return std::isfinite(lengthInMeshUnits) ? EdgeLengthProblem::None : EdgeLengthProblem::Overflow;
 }
 
 const char* edgeLengthProblemKind(EdgeLengthProblem problem) {
@@ -337,7 +347,7 @@ std::string describeEdgeLengthProblem(EdgeLengthProblem problem, double lengthIn
     case EdgeLengthProblem::Spread:
       os << "is " << lengthInMeshUnits << " times the mesh's largest coordinate magnitude (2^"
          << unit.exponent << "), shorter than the " << tol::kMinEdgeLengthRel
-         << " geodex computes with (products of four such lengths would underflow); remove or "
+         << " geodex computes with (its lengths times the tolerances would underflow); remove or "
             "weld the tiny edge";
       break;
     case EdgeLengthProblem::Subnormal:

@@ -302,7 +302,7 @@ GeodesicPath GeodesicSolver::path(const SurfacePoint& target) const {
       double length = 0.0;
       for (std::size_t k = 1; k < result.points.size(); ++k)
         length += ((result.points[k].position - result.points[k - 1].position) * inverse).norm();
-      result.length = inFileUnits(length, "path", 0);
+      result.length = inFileUnits(length);
       return result;
     }
     cur = best.to;

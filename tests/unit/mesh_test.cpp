@@ -146,6 +146,11 @@ TEST(MeshUnits, ADistanceBeyondTheLargestDoubleIsAnErrorNotInfinity) {
     EXPECT_EQ(e.kind(), "distance-overflow") << e.what();
     EXPECT_NE(std::string(e.what()).find("largest double"), std::string::npos) << e.what();
   }
+  // The refusal comes after the solve: in mesh units (2^1023 here) the whole field is there, for
+  // the checks in verify/ to judge the refusal by.
+  EXPECT_EQ(mesh.meshUnit().exponent, 1023);
+  const double along = 1.7e308 / mesh.unit(), across = std::hypot(along, 1e306 / mesh.unit());
+  EXPECT_NEAR(solver.vertexDistancesInMeshUnits()[4], along + across, 1e-12);  // the U unfolded
   // From the bend every distance is representable.
   solver.solve(std::vector{SurfacePoint::atVertex(2)});
   EXPECT_NEAR(solver.vertexDistances()[0], 1.7e308, 1e294);

@@ -67,7 +67,9 @@ class GeodesicSolver {
 
   /// Computes distances from all `sources` (any number; each a vertex, edge point or face point).
   /// Re-running with other sources gives the same results as a fresh solver.
-  /// Throws InputError for a source or target outside the mesh.
+  /// Throws InputError for a source or target outside the mesh, and 'distance-overflow' when a
+  /// distance is beyond the largest double in the file's units; that refusal comes after the
+  /// observer's onFinish, and the mesh-unit accessors below still hold the whole solve.
   void solve(std::span<const SurfacePoint> sources, const SolveOptions& options = {});
 
   /// Per-vertex distances (+inf for unreachable, unreferenced, or beyond a stop), #V entries,
@@ -80,6 +82,8 @@ class GeodesicSolver {
   std::span<const double> vertexDistancesInMeshUnits() const { return vertexDistance_; }
   /// Distance at any surface point, in the mesh file's units. Throws InputError if it overflows.
   double distance(const SurfacePoint& p) const;
+  /// The same in mesh units.
+  double distanceInMeshUnits(const SurfacePoint& p) const;
   /// The geodesic from p back to the nearest source. Empty with length +inf if unreachable.
   GeodesicPath path(const SurfacePoint& p) const;
 
@@ -146,7 +150,9 @@ class GeodesicSolver {
   double targetsMaxDistance(std::span<const ResolvedPoint> targets) const;
   double resolvedDistance(const ResolvedPoint& p) const;  // mesh units
   /// d (mesh units) in the file's units; throws InputError when a finite d overflows there.
-  double inFileUnits(double d, const char* what, std::size_t which) const;
+  double inFileUnits(double d) const;
+  /// The 'distance-overflow' InputError for d (mesh units), naming `vertex` unless kNoIndex.
+  [[noreturn]] void throwDistanceOverflow(double d, Index vertex) const;
 
   const Mesh& mesh_;
   SolverObserver* observer_ = nullptr;

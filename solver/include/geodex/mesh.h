@@ -44,11 +44,17 @@ struct MeshUnit {
 };
 /// The unit for a mesh whose largest coordinate magnitude is `largestCoordinate` (finite, >= 0).
 MeshUnit meshUnitOf(double largestCoordinate);
+/// Where x (mesh units) lands in the file's units: Overflow beyond the largest double, Subnormal
+/// below the smallest normal one (0 and infinities are Normal: they scale to themselves). Decided
+/// from the exponents, so the test raises no floating-point exception (debug test runs trap
+/// overflow), and exact: multiplying by 2^exponent only moves the exponent.
+enum class ScaledRange { Normal, Subnormal, Overflow };
+ScaledRange inFileUnitsRange(double x, const MeshUnit& unit);
 
 /// Why an edge cannot be computed with, given its length in mesh units (or None).
 enum class EdgeLengthProblem {
   None,
-  Spread,     ///< shorter than tol::kMinEdgeLengthRel: products of its lengths would underflow
+  Spread,     ///< shorter than tol::kMinEdgeLengthRel: its lengths times the tolerances would underflow
   Subnormal,  ///< its length in the mesh's own units is below the smallest normal double
   Overflow,   ///< its length in the mesh's own units is beyond the largest double
 };
