@@ -9,6 +9,7 @@
 
 #include "geodex/error.h"
 #include "geodex/verify/mesh_generators.h"
+#include "geodex/verify/repro.h"
 
 namespace geodex::verify {
 namespace {
@@ -120,6 +121,31 @@ TEST(CheckRun, UnknownOracleIsRefused) {
   CheckOptions options;
   options.oracles = {"astrology"};
   EXPECT_THROW(runChecks(mesh, {SurfacePoint::atVertex(0)}, options), InputError);
+}
+
+// Two faces with coordinates up to 1.3e308, found by fuzz_two_faces once its decoder reached
+// 2^1000: the distance from vertex 2 to vertex 3 is 2^1023 x 2.8, so the solver refuses it
+// ('distance-overflow'), rightly, and the check called the refusal an unexpected exception. It is
+// a pass when the solver's own distances, which the oracles check in mesh units, do overflow
+// (corpus/fuzz_two_faces/regress/unexpected-exception-distance-overflow-refused-rightly-near-1e308).
+TEST(CheckRegression, TwoFacesRefusedForADistanceBeyondTheLargestDoubleIsAPass) {
+  TwoFaceCase c;
+  c.soup.positions = {Vec3(1.0715086154154534e+301, 5.5718447573685902e+290, 9.6435774646764059e+301),
+                      Vec3(-7.3585457963590644e+170, 1.3715310171854569e+303, 1.7144137716694691e+302),
+                      Vec3(8.9884656743115975e+307, 5.2666791060420428e+306, 1.7144137714980277e+302),
+                      Vec3(-1.3482698511467367e+308, 1.2858103287949622e+302, 8.9884656743115975e+307)};
+  c.soup.faces = {{0, 2, 1}, {0, 1, 3}};
+  c.source = SurfacePoint::atVertex(2);
+  const Mesh mesh(c.soup);
+  GeodesicSolver solver(mesh);
+  EXPECT_THROW(solver.solve(std::vector{c.source}), InputError);
+  const Verdict v = checkTwoFaces(c, CheckDepth::Fuzzing);
+  EXPECT_TRUE(v.ok()) << v.failed << ": " << v.message;
+
+  // The same faces scaled down by 2^8 give every distance: nothing is refused, all is checked.
+  for (Vec3& p : c.soup.positions) p *= 1.0 / 256;
+  const Verdict scaled = checkTwoFaces(c, CheckDepth::Fuzzing);
+  EXPECT_TRUE(scaled.ok()) << scaled.failed << ": " << scaled.message;
 }
 
 }  // namespace

@@ -154,6 +154,16 @@ bool decidedAlikeAtUnitScale(const LocalWindow& w, const LocalWindow& u) {
   return true;
 }
 
+/// Whether two runs of the Fig. 6 tree ended alike, bit for bit: the leaf and every child.
+bool sameDecision(const LocalPropagation& a, const LocalPropagation& b) {
+  if (a.branch != b.branch || a.numChildren != b.numChildren) return false;
+  for (int i = 0; i < a.numChildren; ++i)
+    if (a.children[i].edge != b.children[i].edge || a.children[i].t0 != b.children[i].t0 ||
+        a.children[i].t1 != b.children[i].t1)
+      return false;
+  return true;
+}
+
 int wrapInt(long v, long lo, long hi) {
   const long span = hi - lo + 1;
   return static_cast<int>(lo + ((v - lo) % span + span) % span);
@@ -1173,11 +1183,7 @@ Verdict checkPredicates(const PredicateCase& c) {
   const LocalWindow u = atUnitScale(w);
   if (decidedAlikeAtUnitScale(w, u)) {
     const LocalPropagation atUnit = propagateLocal(u);
-    bool same = atUnit.branch == r.branch && atUnit.numChildren == r.numChildren;
-    for (int i = 0; same && i < r.numChildren; ++i)
-      same = atUnit.children[i].edge == r.children[i].edge && atUnit.children[i].t0 == r.children[i].t0 &&
-             atUnit.children[i].t1 == r.children[i].t1;
-    if (!same) return fail(v, "scale-invariance", "at unit scale " + describeResult(atUnit) + where());
+    if (!sameDecision(atUnit, r)) return fail(v, "scale-invariance", "at unit scale " + describeResult(atUnit) + where());
   }
 
   // (c) coverage and soundness. Along e0 (G1) and through a zero-area face the rays graze the
@@ -1262,8 +1268,6 @@ ChildInterval childIntervalOf(const PropagationCase& c, const LocalWindow& w, co
   return childInterval(w, ch, {e.length, e.forward}, childEdgesOnOneLine(w));
 }
 
-}  // namespace
-
 /// The case in its face's mesh units (MeshUnit, exact), as the solver meets the face of a mesh.
 PropagationCase inMeshUnits(const PropagationCase& c, MeshUnit& unit) {
   double largest = 0.0;
@@ -1277,6 +1281,8 @@ PropagationCase inMeshUnits(const PropagationCase& c, MeshUnit& unit) {
   m.window.sigma *= unit.inverse;
   return m;
 }
+
+}  // namespace
 
 Verdict checkPropagation(const PropagationCase& input) {
   Verdict v;
@@ -1299,12 +1305,7 @@ Verdict checkPropagation(const PropagationCase& input) {
     const LocalWindow atScale{w.edgeLength * k, w.apex * k, w.b0 * k, w.b1 * k, w.source * k};
     if (decidedAlikeAtUnitScale(atScale, atUnitScale(w))) {
       const LocalPropagation scaled = propagateLocal(atScale);
-      bool same = scaled.branch == r.branch && scaled.numChildren == r.numChildren;
-      for (int i = 0; same && i < r.numChildren; ++i) {
-        same = scaled.children[i].edge == r.children[i].edge && scaled.children[i].t0 == r.children[i].t0 &&
-               scaled.children[i].t1 == r.children[i].t1;
-      }
-      if (!same) {
+      if (!sameDecision(scaled, r)) {
         std::ostringstream os;
         os << std::setprecision(17) << "at the input's scale (2^" << unit.exponent << ") the tree gives "
            << describeResult(scaled) << ", in mesh units " << describeResult(r);
@@ -1425,8 +1426,6 @@ bool sameFunction(const Interval& a, const Interval& b) {
   return a.source == b.source && a.sigma == b.sigma && a.side == b.side && a.origin == b.origin;
 }
 
-}  // namespace
-
 /// The case in mesh units, as a mesh holding the edge would have it (MeshUnit): Algorithm 2
 /// computes σ + √((x − s.x)² + s.y²) and runs on the solver's lengths, never on a file's 1e157.
 /// Nullopt when a value would not scale exactly (it is or becomes subnormal: 1e-328 of its edge,
@@ -1448,6 +1447,8 @@ std::optional<EdgeUpdateCase> inMeshUnits(const EdgeUpdateCase& c) {
   if (!exact) return std::nullopt;
   return m;
 }
+
+}  // namespace
 
 Verdict checkEdgeUpdate(const EdgeUpdateCase& input) {
   Verdict v;
@@ -1613,12 +1614,24 @@ class UnfoldingChecker : public SolverObserver {
   Interval window_;
 };
 
+/// True if one of the solve's vertex distances is beyond the largest double in file units.
+bool someDistanceOverflows(const GeodesicSolver& solver) {
+  for (double d : solver.vertexDistancesInMeshUnits())
+    if (inFileUnitsRange(d, solver.mesh().meshUnit()) == ScaledRange::Overflow) return true;
+  return false;
+}
+
 /// Runs a solve with the observers, turning what they throw into a verdict. False if it failed.
+/// A 'distance-overflow' refusal passes when the solve's own distances (which the checks after
+/// this compare with the oracles, in mesh units) do overflow in file units.
 bool solveChecked(GeodesicSolver& solver, std::span<const SurfacePoint> sources,
                   const SolveOptions& options, Verdict& v) {
   try {
     solver.solve(sources, options);
     return true;
+  } catch (const InputError& e) {
+    if (e.kind() == "distance-overflow" && someDistanceOverflows(solver)) return true;
+    fail(v, "unexpected-exception", e.what());
   } catch (const InvariantViolation& e) {
     std::ostringstream os;
     os << e.what() << "\n  edge " << e.edge << " length " << fmt(e.edgeLength) << " branch " << e.branch;
@@ -1715,7 +1728,6 @@ Verdict checkTwoFaces(const TwoFaceCase& c, CheckDepth) {
               std::to_string(unfolding.checked) + " unfolded distances checked";
 
   const TriangleSoup soup = soupInMeshUnits(*mesh);
-  const double inverse = mesh->meshUnit().inverse;
   const Vec3 S = surfacePointPosition(soup, c.source);
   const unsigned sourceFaces = facesOf(soup, c.source);
   const Vec3 a = soup.positions[0], b = soup.positions[1];  // the shared edge v0 v2
@@ -1738,8 +1750,7 @@ Verdict checkTwoFaces(const TwoFaceCase& c, CheckDepth) {
     const double truth = (facesOf(soup, q) & sourceFaces) != 0 ? (S - Q).norm() : viaSegment(S, Q, a, b);
     double got;
     try {
-      got = q.kind == SurfacePoint::Kind::Vertex ? solver.vertexDistancesInMeshUnits()[q.vertex]
-                                                  : solver.distance(q) * inverse;
+      got = solver.distanceInMeshUnits(q);
     } catch (const std::exception& e) {
       return fail(v, "unexpected-exception", std::string("query ") + formatSurfacePoint(q) + ": " + e.what() + where());
     }
@@ -1804,8 +1815,8 @@ Verdict checkSolver(const SolverCase& c, CheckDepth depth) {
   solver.setObserver(&unfolding);
   if (!solveChecked(solver, c.sources, {}, v)) return v.message += where(), v;
   v.degeneracies = solver.counters();
-  const auto inMeshUnits = solver.vertexDistancesInMeshUnits();
-  const std::vector<double> d(inMeshUnits.begin(), inMeshUnits.end());
+  const auto meshUnitDistances = solver.vertexDistancesInMeshUnits();
+  const std::vector<double> d(meshUnitDistances.begin(), meshUnitDistances.end());
   {
     std::ostringstream os;
     os << mesh.numFaces() << " faces, " << c.sources.size() << " source(s), "
@@ -1864,7 +1875,7 @@ Verdict checkSolver(const SolverCase& c, CheckDepth depth) {
   for (Index e = 0; e < mesh.numEdges(); ++e) {
     const Edge& E = mesh.edge(e);
     const double du = d[E.vertex[0]], dv = d[E.vertex[1]];
-    const double got = solver.distance(SurfacePoint::onEdge(E.vertex[0], E.vertex[1], 0.5)) * inverse;
+    const double got = solver.distanceInMeshUnits(SurfacePoint::onEdge(E.vertex[0], E.vertex[1], 0.5));
     const Vec3 mid = 0.5 * (soup.positions[E.vertex[0]] + soup.positions[E.vertex[1]]);
     if (!std::isfinite(du)) {
       if (std::isfinite(got))
@@ -1912,6 +1923,11 @@ Verdict checkSolver(const SolverCase& c, CheckDepth depth) {
              << ", " << q.position.z() << ")";
         return fail(v, "path-length", os.str() + where());
       }
+    } catch (const InputError& e) {
+      // Its length is in file units: refused, rightly, when the distance it must equal overflows.
+      const double longest = d[farthest] + kRel * (d[farthest] + diag);
+      if (!(e.kind() == "distance-overflow" && inFileUnitsRange(longest, mesh.meshUnit()) == ScaledRange::Overflow))
+        return fail(v, "unexpected-exception", std::string("path: ") + e.what() + where());
     } catch (const std::exception& e) {
       return fail(v, "unexpected-exception", std::string("path: ") + e.what() + where());
     }
