@@ -14,6 +14,7 @@ PACKAGES=(
   libcgal-demo                        # ~150 real meshes (data.tar.gz) for tests, demo, benchmarks
   libpng-dev libstb-dev               # images (geodex render)
   python3 git
+  python3-dev python3-pybind11 python3-numpy python3-pytest python3-yaml  # the Python module (python/)
 )
 
 missing=()
