@@ -1,0 +1,1 @@
+TARGETS=(fuzz_a fuzz_b)
