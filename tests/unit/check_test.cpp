@@ -148,5 +148,45 @@ TEST(CheckRegression, TwoFacesRefusedForADistanceBeyondTheLargestDoubleIsAPass) 
   EXPECT_TRUE(scaled.ok()) << scaled.failed << ": " << scaled.message;
 }
 
+// fuzz_propagation, 20-minute run of 2026-11-25: cases the check judged by more than the solver
+// promises. Each is a harness fault; the solver is not involved.
+PropagationCase propagationCase(Vec3 v0, Vec3 v2, Vec3 v1, double b0, double b1, Vec2 source, double sigma) {
+  PropagationCase c;
+  c.face = {v0, v2, v1};
+  c.window.b0 = b0, c.window.b1 = b1, c.window.source = source, c.window.sigma = sigma;
+  return c;
+}
+
+// A σ of 5.3e278 beside a face 1e-35 across is 2^116 times more in mesh units: beyond the
+// largest double, so the check unfolded an infinite distance and called it wrong. No window of a
+// mesh the solver holds is like that: skipped as outside its range
+// (corpus/fuzz_propagation/regress/unfolding-sigma-beyond-the-largest-double-in-mesh-units).
+TEST(CheckRegression, APropagationWhoseWindowOverflowsInMeshUnitsIsOutsideTheSolversRange) {
+  const PropagationCase c = propagationCase(Vec3(0, 0, 1.4482826745237228e-35), Vec3(0, 4.8256983339323912e-35, 0),
+                                            Vec3(0, 0, 0), 1.2595854257315042e-46, 3.7787562771945129e-35,
+                                            Vec2(7.9818114762314302e-35, 1.7339473237376058e-35), 5.3179868762890687e+278);
+  const Verdict v = checkPropagation(c);
+  EXPECT_TRUE(v.ok()) << v.failed << ": " << v.message;
+  EXPECT_FALSE(v.interesting) << v.summary;
+  // The same window with a σ a mesh can have is checked.
+  PropagationCase near = c;
+  near.window.sigma = 1e-34;
+  const Verdict w = checkPropagation(near);
+  EXPECT_TRUE(w.interesting && w.ok()) << w.failed << ": " << w.message;
+}
+
+// A zero-area face 2.4e-153 across whose apex lies 2^-500 of its size off e0's line: scaled back
+// to the input's scale (2^-507) that offset underflows to 0, so the tree met another
+// configuration there and the check called the difference (a child starting at 2.2e-172 or at 0)
+// a scale dependence. The equality is promised only where every value scales exactly
+// (corpus/fuzz_propagation/regress/scale-invariance-apex-offset-underflows-at-the-inputs-scale).
+TEST(CheckRegression, ScaleInvarianceIsJudgedOnlyWhereEveryValueScalesExactly) {
+  const PropagationCase c = propagationCase(Vec3(0, 0, 0), Vec3(-2.3866690339840662e-153, 0, 1.1124591726705961e-308),
+                                            Vec3(0, 0, -1.1380524797363597e-169), 0.0, 1.0441677023680289e-153,
+                                            Vec2(0, 0), 0.0);
+  const Verdict v = checkPropagation(c);
+  EXPECT_TRUE(v.interesting && v.ok()) << v.failed << ": " << v.message;
+}
+
 }  // namespace
 }  // namespace geodex::verify

@@ -999,8 +999,11 @@ ExactFig6 exactFig6Rational(const LocalWindow& w) {
   return r.branch = Fig6Branch::InsideWedge, r;
 }
 
-/// The Fig. 6 tree on exact rationals, through the double filter where that is certain.
+/// The Fig. 6 tree on exact rationals, through the double filter where that is certain. A
+/// configuration with a non-finite value has no exact decision (GMP raises SIGFPE on one).
 ExactFig6 exactFig6(const LocalWindow& w) {
+  for (double x : {w.edgeLength, w.apex.x(), w.apex.y(), w.b0, w.b1, w.source.x(), w.source.y()})
+    if (!std::isfinite(x)) return {std::nullopt, "a non-finite value in the configuration"};
   if (auto r = filteredFig6(w)) return *std::move(r);
   return exactFig6Rational(w);
 }
@@ -1268,8 +1271,10 @@ ChildInterval childIntervalOf(const PropagationCase& c, const LocalWindow& w, co
   return childInterval(w, ch, {e.length, e.forward}, childEdgesOnOneLine(w));
 }
 
-/// The case in its face's mesh units (MeshUnit, exact), as the solver meets the face of a mesh.
-PropagationCase inMeshUnits(const PropagationCase& c, MeshUnit& unit) {
+/// The case in its face's mesh units (MeshUnit), as the solver meets the face of a mesh; nullopt
+/// when a value of the window is beyond the largest double there (a σ of 5e278 beside a face
+/// 1e-35 across: no mesh the solver holds has such a window).
+std::optional<PropagationCase> inMeshUnits(const PropagationCase& c, MeshUnit& unit) {
   double largest = 0.0;
   for (const Vec3& p : c.face) largest = std::max(largest, p.cwiseAbs().maxCoeff());
   unit = meshUnitOf(largest);
@@ -1279,18 +1284,30 @@ PropagationCase inMeshUnits(const PropagationCase& c, MeshUnit& unit) {
   m.window.b1 *= unit.inverse;
   m.window.source *= unit.inverse;
   m.window.sigma *= unit.inverse;
+  for (double x : {m.window.b0, m.window.b1, m.window.source.x(), m.window.source.y(), m.window.sigma})
+    if (!std::isfinite(x)) return std::nullopt;
   return m;
+}
+
+/// Whether every value of w times k (a power of two) is exact: the Fig. 6 tree decides w and
+/// w × k alike only then (an apex 2^-500 of its face's size underflows to 0 at 2^-507).
+bool scalesExactly(const LocalWindow& w, double k) {
+  for (double x : {w.edgeLength, w.apex.x(), w.apex.y(), w.b0, w.b1, w.source.x(), w.source.y()})
+    if (!scalesExactly(x, k)) return false;
+  return true;
 }
 
 }  // namespace
 
 Verdict checkPropagation(const PropagationCase& input) {
   Verdict v;
-  v.interesting = true;
   // The solver propagates in mesh units; the checks below do too, so that their own arithmetic
   // holds at any scale the decoder reaches.
   MeshUnit unit;
-  const PropagationCase c = inMeshUnits(input, unit);
+  const auto inUnits = inMeshUnits(input, unit);
+  if (!inUnits) return v.summary = "a value is beyond the largest double in mesh units: outside the solver's range", v;
+  v.interesting = true;
+  const PropagationCase& c = *inUnits;
   const LocalWindow w = localWindowOf(c);
   LocalPropagation r;
   try {
@@ -1303,7 +1320,7 @@ Verdict checkPropagation(const PropagationCase& input) {
   {
     const double k = unit.unit;
     const LocalWindow atScale{w.edgeLength * k, w.apex * k, w.b0 * k, w.b1 * k, w.source * k};
-    if (decidedAlikeAtUnitScale(atScale, atUnitScale(w))) {
+    if (scalesExactly(w, k) && decidedAlikeAtUnitScale(atScale, atUnitScale(w))) {
       const LocalPropagation scaled = propagateLocal(atScale);
       if (!sameDecision(scaled, r)) {
         std::ostringstream os;
