@@ -102,21 +102,36 @@ LocalWindow atUnitScale(const LocalWindow& w) {
   return {w.edgeLength * k, w.apex * k, w.b0 * k, w.b1 * k, w.source * k};
 }
 
-LocalPropagation propagateLocal(const LocalWindow& unscaled) {
+namespace {
+
+// Whether the Fig. 6 tree must see w at unit scale first: its size, as atUnitScale measures it
+// (max(|e0|, |apex.x|, |apex.y|)), is finite and outside [2^-100, 2^100]; atUnitScale puts it in
+// [1, 2). (Edge length first: it is the size, nearly always in range.)
+bool farFromUnitSize(const LocalWindow& w) {
+  constexpr double kLow = 0x1p-100, kHigh = 0x1p100;
+  const double ax = std::abs(w.apex.x()), ay = std::abs(w.apex.y());
+  const bool inBand =
+      (w.edgeLength >= kLow || ax >= kLow || ay >= kLow) && w.edgeLength <= kHigh && ax <= kHigh && ay <= kHigh;
+  if (inBand) return false;
+  const double size = std::max({w.edgeLength, ax, ay});
+  return size > 0.0 && size < std::numeric_limits<double>::infinity();
+}
+
+}  // namespace
+
+LocalPropagation propagateLocal(const LocalWindow& w) {
   using pred::Side;
   // A face far from unit size is decided at unit scale (atUnitScale), so that the collinearity
   // tests' products of four lengths (sideOfRay) neither under- nor overflow: a face at 1e-106
   // decided G2 where the exact tree says G3 (corpus/fuzz_propagation/regress/exact-predicates-
-  // face-at-1e-106-fourth-powers-underflow). Inside the band the configuration is used as it is:
-  // scaling by a power of two commutes with every operation here (the square roots are of
-  // squares) while no product leaves the normal range, so either way gives the same bits unless
-  // a value is 2^100 times smaller than the face — far below anything the solver keeps (D1).
-#ifdef GEODEX_NO_MESH_UNITS  // bench-only build (solver/CMakeLists.txt)
-  const LocalWindow& w = unscaled;
-#else
-  constexpr double kLow = 0x1p-100, kHigh = 0x1p100;
-  const double size = std::max({unscaled.edgeLength, std::abs(unscaled.apex.x()), unscaled.apex.y()});
-  const LocalWindow w = size >= kLow && size <= kHigh ? unscaled : atUnitScale(unscaled);
+  // face-at-1e-106-fourth-powers-underflow). Inside the band the configuration is used as it is
+  // (no copy: one per call was most of what mesh units cost a solve): scaling by a power of two
+  // commutes with every operation here (the square roots are of squares) while no product
+  // leaves the normal range, so either way gives the same bits unless a value is 2^100 times
+  // smaller than the face — far below anything the solver keeps (D1). atUnitScale lands in the
+  // band, so this recurses once at most.
+#ifndef GEODEX_NO_MESH_UNITS  // (defined in a bench-only build: solver/CMakeLists.txt)
+  if (farFromUnitSize(w)) [[unlikely]] return propagateLocal(atUnitScale(w));
 #endif
   const Vec2 v0(0.0, 0.0), v2(w.edgeLength, 0.0), v1 = w.apex, s = w.source;
   const Vec2 b0(w.b0, 0.0), b1(w.b1, 0.0);
