@@ -15,8 +15,9 @@ Every input is checked as the `geodex` command-line tool checks it: a bad one ra
 geodex.InputError (a ValueError) with the same message, never a crash or a wrong number.
 """
 from ._geodex import InputError, Solver, SurfacePoint, edge, face, load, vertex
+from ._geodex import check as _check
 
-__all__ = ["distances", "Solver", "SurfacePoint", "vertex", "edge", "face", "load", "InputError"]
+__all__ = ["distances", "check", "Solver", "SurfacePoint", "vertex", "edge", "face", "load", "InputError"]
 
 
 def distances(V, F, sources, *, stop_distance=None, targets=None):
@@ -33,3 +34,19 @@ def distances(V, F, sources, *, stop_distance=None, targets=None):
     Raises InputError for a bad mesh, source or option, with the CLI's message.
     """
     return Solver(V, F).distances(sources, stop_distance=stop_distance, targets=targets)
+
+
+def check(V, F, sources, *, level="full", oracles=None):
+    """Solve with every invariant checked and independent oracles: the CLI's `geodex check`.
+
+    V, F, sources: as for distances().
+    level: "full" (every Algorithm 2 update checked against the list before it, and coverage at
+        the end) or "cheap" (the list's order and continuity after every update).
+    oracles: names to run, default all but cgal: "bounds", "lipschitz", "planar", "symmetry",
+        "metamorphic", "paths", "exact-predicates".
+    Returns the report as a dict, the same object `geodex check --json` prints: "ok", the
+    "violations" (one sentence each), per-invariant and per-oracle tallies with the worst error,
+    and the degeneracy counters G1-G5, D1-D4.
+    Raises InputError for a bad mesh, source or option.
+    """
+    return _check(V, F, sources, level=level, oracles=oracles)

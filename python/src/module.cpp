@@ -13,12 +13,14 @@
 #include <mutex>
 #include <optional>
 #include <span>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include "geodex/error.h"
 #include "geodex/geodesic_solver.h"
 #include "geodex/mesh_io.h"
+#include "geodex/verify/check.h"
 
 namespace py = pybind11;
 
@@ -213,6 +215,28 @@ py::tuple load(const std::string& path) {
   return py::make_tuple(V, F);
 }
 
+// `geodex check` on arrays: the solve with the step-6 invariants checked live, then the oracles;
+// the report is the CLI's JSON, as a dict.
+py::object check(const py::handle& vertices, const py::handle& faces, const py::handle& sources,
+                 const std::string& level, const py::handle& oracles) {
+  if (level != "cheap" && level != "full") inputError("usage", "level must be 'cheap' or 'full', not '" + level + "'");
+  const std::shared_ptr<const Mesh> mesh = meshFromArrays(vertices, faces);
+  const std::vector<SurfacePoint> from = toPoints(sources, "sources");
+  if (from.empty()) inputError("bad-source", "at least one source is needed");
+  verify::CheckOptions options;
+  options.level = level == "full" ? verify::CheckLevel::Full : verify::CheckLevel::Cheap;
+  if (!oracles.is_none()) {
+    if (py::isinstance<py::str>(oracles)) inputError("usage", "oracles is a list of names, not one string");
+    for (const py::handle& o : py::reinterpret_borrow<py::iterable>(oracles)) options.oracles.push_back(py::str(o));
+  }
+  std::ostringstream json;
+  {
+    py::gil_scoped_release release;
+    verify::writeCheckJson(json, verify::runChecks(*mesh, from, options));
+  }
+  return py::module_::import("json").attr("loads")(json.str());
+}
+
 }  // namespace
 }  // namespace geodex::python
 
@@ -249,6 +273,8 @@ Different Solver objects solve in parallel threads (the GIL is released while so
       .def_property_readonly("stats", &Solver::stats)
       .def_property_readonly("num_vertices", &Solver::numVertices)
       .def_property_readonly("num_faces", &Solver::numFaces);
+  m.def("check", &check, py::arg("V"), py::arg("F"), py::arg("sources"), py::kw_only(), py::arg("level") = "full",
+        py::arg("oracles") = py::none());
   m.def("load", &load, py::arg("path"),
         "load(path) -> (V, F): a mesh file (OFF, OBJ or PLY) read and checked as the CLI does, V an "
         "(n, 3) float64 array, F an (m, 3) int64 array. Raises InputError naming the file, line "

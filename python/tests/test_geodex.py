@@ -1,6 +1,7 @@
 """The Python module against the CLI (to the last bit), independent expected values, and every
 class of bad input. Run by CTest (label `python`) with PYTHONPATH at the built package and
 GEODEX_CLI / GEODEX_CGAL_MESH_DIR set; `python3 -m pytest python/tests` by hand with the same."""
+import json
 import math
 import os
 import subprocess
@@ -224,3 +225,41 @@ def test_load_names_the_file_and_line(tmp_path):
         geodex.load(str(bad))
     with pytest.raises(geodex.InputError):
         geodex.load(str(tmp_path / "missing.off"))
+
+
+# ===  geodex.check: the CLI's `geodex check`, the same report ===================================
+
+def cli_check(path, *args):
+    out = subprocess.run([CLI, "check", path, "--json", *args], capture_output=True, text=True)
+    assert out.returncode in (0, 1), out.stderr
+    return json.loads(out.stdout)
+
+
+@pytest.mark.parametrize("name", ["elephant.off", "cross.off"])
+def test_check_reports_what_the_cli_reports(name):
+    path = mesh_path(name)
+    V, F = geodex.load(path)
+    report = geodex.check(V, F, [0, geodex.edge(int(F[0][0]), int(F[0][1]), 0.25)])
+    assert report == cli_check(path, "--source", "v:0", "--source", "e:%d,%d,0.25" % (F[0][0], F[0][1]),
+                               "--level", "full")
+    assert report["ok"] is True and report["violations"] == []
+
+
+def test_check_cheap_level_and_chosen_oracles():
+    V, F = grid(6)
+    report = geodex.check(V, F, 0, level="cheap", oracles=["bounds", "planar"])
+    assert sorted(report["oracles"]) == ["bounds-dijkstra", "bounds-euclidean", "planar"]
+    assert report["oracles"]["planar"]["checked"] > 0 and report["ok"] is True
+    # The pointwise minimum is the full tier's: the cheap one leaves it unchecked.
+    assert report["invariants"]["pointwise-min"]["checked"] == 0
+    assert geodex.check(V, F, 0, oracles=["bounds"])["invariants"]["pointwise-min"]["checked"] > 0
+
+
+@pytest.mark.parametrize("kwargs,message", [
+    ({"level": "thorough"}, "level must be"),
+    ({"oracles": ["bounds", "nonsense"]}, "nonsense"),
+    ({"oracles": "bounds"}, "list of names"),
+])
+def test_check_bad_options(kwargs, message):
+    with pytest.raises(geodex.InputError, match=message):
+        geodex.check(SQUARE_V, SQUARE_F, [0], **kwargs)
