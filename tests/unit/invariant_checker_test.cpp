@@ -94,6 +94,29 @@ TEST(InvariantChecker, MismatchAtAnEq1BreakpointFails) {
   EXPECT_EQ(violatedBy(u), "");
 }
 
+// The checker looks again only at what an update rewrote and its neighbours, trusting the rest
+// to be as the updates before left it: that trust is checked, not taken from the report.
+TEST(InvariantChecker, AnUpdateThatWritesOutsideTheRangeItReportsIsCheckedWhole) {
+  Update u;
+  u.before = {make(0, 2, Vec2(1, 1)), make(2, 4, Vec2(3, 1)), make(4, kL, Vec2(7, 1))};
+  u.incoming = make(4, kL, Vec2(7, 1));
+  u.after = u.before;
+  u.report.first = 2, u.report.last = 3;  // "only the last interval was rewritten"
+  EXPECT_EQ(violatedBy(u), "");
+  u.after[0].sigma = -1.0;  // but the first one, two places away, was broken
+  EXPECT_EQ(violatedBy(u), "finite-non-negative");
+}
+
+TEST(InvariantChecker, APairFormedWithTheNeighbourOfTheRewrittenPartIsChecked) {
+  Update u;
+  u.before = {make(0, 2, Vec2(1, 1)), make(2, 4, Vec2(3, 1)), make(4, kL, Vec2(7, 1))};
+  u.incoming = make(3.5, kL, Vec2(7, 1));
+  u.after = u.before;
+  u.after[2].b0 = 3.5;  // rewritten to overlap its unchanged left neighbour
+  u.report.first = 2, u.report.last = 3;
+  EXPECT_EQ(violatedBy(u), "no-overlap");
+}
+
 TEST(InvariantChecker, IgnoringABetterIncomingIntervalFails) {
   Update u;
   u.before = {make(0, kL, Vec2(5, 3), 1.0)};

@@ -42,6 +42,34 @@ double listDistance(std::span<const Interval> list, double x) {
   return best;
 }
 
+// The same interval: everything the invariants read, and the propagation state.
+bool sameInterval(const Interval& a, const Interval& b) {
+  return a.b0 == b.b0 && a.b1 == b.b1 && a.source == b.source && a.sigma == b.sigma &&
+         a.origin == b.origin && a.side == b.side && a.pending() == b.pending();
+}
+
+// What an update rewrote: after[afterLo, afterHi) in place of before[beforeLo, beforeHi), the
+// intervals outside being the same ones in both lists. Taken from the report's [first, last) and
+// then verified interval by interval (a comparison, far cheaper than the invariants), so that a
+// bug writing outside the range it reports is still seen: it gets the whole lists.
+struct ChangedRange {
+  std::size_t afterLo, afterHi, beforeLo, beforeHi;
+};
+
+ChangedRange changedRange(const EdgeUpdateEvent& e) {
+  const ChangedRange whole{0, e.after.size(), 0, e.before.size()};
+  const std::size_t first = e.report.first, last = e.report.last;
+  if (first > last || last > e.after.size()) return whole;
+  const std::size_t suffix = e.after.size() - last;
+  if (first + suffix > e.before.size()) return whole;
+  const std::size_t beforeHi = e.before.size() - suffix;
+  for (std::size_t i = 0; i < first; ++i)
+    if (!sameInterval(e.before[i], e.after[i])) return whole;
+  for (std::size_t k = 0; k < suffix; ++k)
+    if (!sameInterval(e.before[beforeHi + k], e.after[last + k])) return whole;
+  return {first, last, first, beforeHi};
+}
+
 }  // namespace
 
 InvariantChecker::InvariantChecker(CheckLevel level, bool throwOnViolation)
@@ -78,6 +106,11 @@ void InvariantChecker::record(Id id, bool ok, double error, const std::string& w
 }
 
 std::string InvariantChecker::checkList(std::span<const Interval> list, double L, std::string& why) {
+  return checkListRange(list, 0, list.size(), L, why);
+}
+
+std::string InvariantChecker::checkListRange(std::span<const Interval> list, std::size_t lo,
+                                             std::size_t hi, double L, std::string& why) {
   // The message is written only for the invariant that fails (this runs at every edge update).
   const auto fail = [&why](const char* invariant, const auto& write) {
     std::ostringstream os;
@@ -86,7 +119,8 @@ std::string InvariantChecker::checkList(std::span<const Interval> list, double L
     why = os.str();
     return std::string(invariant);
   };
-  for (std::size_t i = 0; i < list.size(); ++i) {
+  hi = std::min(hi, list.size());
+  for (std::size_t i = lo; i < hi; ++i) {
     const Interval& w = list[i];
     if (!(std::isfinite(w.b0) && std::isfinite(w.b1) && std::isfinite(w.sigma) && w.sigma >= 0.0 &&
           isFinite(w.source))) {
@@ -113,7 +147,7 @@ std::string InvariantChecker::checkList(std::span<const Interval> list, double L
            << std::abs(w.d0() - w.d1()) << ")";
       });
     }
-    if (i == 0) continue;
+    if (i == lo) continue;
     const Interval& p = list[i - 1];
     if (w.b0 < p.b0) {
       return fail("sorted", [&](std::ostream& os) {
@@ -132,8 +166,8 @@ std::string InvariantChecker::checkList(std::span<const Interval> list, double L
       });
     }
   }
-  if (!list.empty() && ((list.front().b0 > 0.0 && list.front().b0 < sewLength(list.front(), L)) ||
-                        (list.back().b1 < L && L - list.back().b1 < sewLength(list.back(), L)))) {
+  if (lo < hi && ((lo == 0 && list.front().b0 > 0.0 && list.front().b0 < sewLength(list.front(), L)) ||
+                  (hi == list.size() && list.back().b1 < L && L - list.back().b1 < sewLength(list.back(), L)))) {
     why = "gap below epsilon left unsewn at an end of the edge";
     return "no-tiny-gap";
   }
@@ -141,16 +175,23 @@ std::string InvariantChecker::checkList(std::span<const Interval> list, double L
 }
 
 void InvariantChecker::onEdgeUpdate(const EdgeUpdateEvent& e) {
+  // What the update rewrote, with one neighbour on each side: an interval's ε and the pairs it
+  // forms involve its neighbours, so those are checked again too.
+  const ChangedRange changed = changedRange(e);
+  const std::size_t lo = changed.afterLo >= 1 ? changed.afterLo - 1 : 0;
+  const std::size_t hi = std::min(changed.afterHi + 1, e.after.size());
+
   // --- cheap tier: the list is well formed
   std::string why;
-  const std::string broken = checkList(e.after, e.edgeLength, why);
+  const std::string broken = checkListRange(e.after, lo, hi, e.edgeLength, why);
   for (int id = Sorted; id <= RealSource; ++id) record(static_cast<Id>(id), broken != kNames[id], 0.0, why, &e);
 
   // --- cheap tier: the two neighbours agree at every Eq. 1 breakpoint
   for (double x : e.report.eq1Breakpoints) {
     // Find the two intervals meeting at x (if steps 3–5 moved or merged the breakpoint away,
-    // there is nothing left to compare).
-    for (std::size_t i = 0; i + 1 < e.after.size(); ++i) {
+    // there is nothing left to compare). Eq. 1 solves inside the incoming range, which the
+    // rewritten part holds.
+    for (std::size_t i = lo; i + 1 < hi; ++i) {
       if (e.after[i].b1 != x || e.after[i + 1].b0 != x) continue;
       const double a = e.after[i].distanceAt(x), b = e.after[i + 1].distanceAt(x);
       const double scale = std::max(a, b) + e.edgeLength;
@@ -167,33 +208,50 @@ void InvariantChecker::onEdgeUpdate(const EdgeUpdateEvent& e) {
   }
 
   if (level_ != CheckLevel::Full) return;
-  // --- full tier: pointwise minimum of the old list and the incoming interval, sampled.
-  std::vector<double> xs;
-  const int uniform = 32;
-  for (int k = 0; k <= uniform; ++k) xs.push_back(e.edgeLength * k / uniform);
-  // Inside every piece between consecutive endpoints of the three lists: a D2 overlap or a D1
-  // sliver is far shorter than the uniform spacing, and which function wins there is what
-  // steps 1–4 decide (an overlap handed to the longer side went unseen otherwise).
-  std::vector<double> ends{e.incoming.b0, e.incoming.b1};
-  for (const Interval& w : e.before) ends.insert(ends.end(), {w.b0, w.b1});
-  for (const Interval& w : e.after) ends.insert(ends.end(), {w.b0, w.b1});
-  std::sort(ends.begin(), ends.end());
-  for (std::size_t i = 0; i + 1 < ends.size(); ++i)
-    if (ends[i + 1] > ends[i]) xs.push_back(0.5 * (ends[i] + ends[i + 1]));
-  double worst = 0.0;
-  std::string where;
+  // --- full tier: pointwise minimum of the old list and the incoming interval, sampled. Outside
+  //     the rewritten parts and the incoming range the list after is the list before, which is
+  //     the minimum there: the samples are taken where the two lists differ or the incoming
+  //     interval reaches, with the neighbours on each side.
+  const std::size_t beforeLo = changed.beforeLo >= 1 ? changed.beforeLo - 1 : 0;
+  const std::size_t beforeHi = std::min(changed.beforeHi + 1, e.before.size());
+  const std::span<const Interval> beforeNear = e.before.subspan(beforeLo, beforeHi - beforeLo);
+  const std::span<const Interval> afterNear = e.after.subspan(lo, hi - lo);
   // Each function counts where it covers x up to the slack step 4 may sew (ε): a sewn end is
   // part of the repaired list by contract.
   // Step 4 sews up to sewLength, which can exceed ε by the ray-end precision (a 49-long edge's
   // end gap of 4.9000000049e-10 was sewn against an ε of 4.9e-10:
   // corpus/fuzz_edge_update/regress/pointwise-min-end-gap-sewn-up-to-the-ray-end-precision).
   double tiny = tol::kTinyIntervalRel * e.edgeLength;
-  for (const Interval& w : e.before)
+  for (const Interval& w : beforeNear)
     tiny = std::max({tiny, tinyLength(w, e.edgeLength), sewLength(w, e.edgeLength)});
   tiny = std::max({tiny, tinyLength(e.incoming, e.edgeLength), sewLength(e.incoming, e.edgeLength)});
-  // The slack is the largest ε of all: step 4 sews a gap below the ε of either interval beside
-  // it, so a near window's end is carried across a gap as wide as a far neighbour's ε
-  // (corpus/fuzz_edge_update/regress/pointwise-min-gap-sewn-by-the-far-neighbours-epsilon).
+  // The slack is the largest ε of the intervals step 4 could sew with: it sews a gap below the ε
+  // of either interval beside it, so a near window's end is carried across a gap as wide as a
+  // far neighbour's ε (corpus/fuzz_edge_update/regress/pointwise-min-gap-sewn-by-the-far-neighbours-epsilon).
+  // Steps 3–5 work on the rewritten part and its neighbours, which beforeNear holds.
+  double from = e.incoming.b0, to = e.incoming.b1;
+  for (const auto part : {beforeNear, afterNear})
+    if (!part.empty()) from = std::min(from, part.front().b0), to = std::max(to, part.back().b1);
+  from -= tiny, to += tiny;
+  std::vector<double>& xs = samples_;
+  xs.clear();
+  const int uniform = 32;
+  for (int k = 0; k <= uniform; ++k) {
+    const double x = e.edgeLength * k / uniform;
+    if (x >= from && x <= to) xs.push_back(x);
+  }
+  // Inside every piece between consecutive endpoints of the three lists: a D2 overlap or a D1
+  // sliver is far shorter than the uniform spacing, and which function wins there is what
+  // steps 1–4 decide (an overlap handed to the longer side went unseen otherwise).
+  std::vector<double>& ends = ends_;
+  ends.assign({e.incoming.b0, e.incoming.b1});
+  for (const Interval& w : beforeNear) ends.insert(ends.end(), {w.b0, w.b1});
+  for (const Interval& w : afterNear) ends.insert(ends.end(), {w.b0, w.b1});
+  std::sort(ends.begin(), ends.end());
+  for (std::size_t i = 0; i + 1 < ends.size(); ++i)
+    if (ends[i + 1] > ends[i]) xs.push_back(0.5 * (ends[i] + ends[i + 1]));
+  double worst = 0.0;
+  std::array<double, 4> worstAt{};  // x, the list's value, the strict and the loose minimum
   auto valueWithSlack = [&](const Interval& w, double x) {
     return x >= w.b0 - tiny && x <= w.b1 + tiny ? w.distanceAt(x) : INFINITY;
   };
@@ -243,15 +301,18 @@ void InvariantChecker::onEdgeUpdate(const EdgeUpdateEvent& e) {
       const double above = std::isfinite(strict) ? std::max(0.0, got - strict) : 0.0;
       err = std::max({match, below, above}) / scale;
     }
-    if (!(err <= worst)) {
-      worst = err;
-      std::ostringstream os;
-      os << std::setprecision(17) << "at x = " << x << " the list gives " << got
-         << " but min(before, incoming) is " << strict << " (" << loose << " with the sewing slack)";
-      where = os.str();
-    }
+    if (!(err <= worst)) worst = err, worstAt = {x, got, strict, loose};
   }
-  record(PointwiseMin, worst <= tol::kPointwiseMinRel, worst, where, &e);
+  // (The message is written only when it is needed: this runs at every edge update.)
+  const bool ok = worst <= tol::kPointwiseMinRel;
+  std::string where;
+  if (!ok) {
+    std::ostringstream os;
+    os << std::setprecision(17) << "at x = " << worstAt[0] << " the list gives " << worstAt[1]
+       << " but min(before, incoming) is " << worstAt[2] << " (" << worstAt[3] << " with the sewing slack)";
+    where = os.str();
+  }
+  record(PointwiseMin, ok, worst, where, &e);
 }
 
 void InvariantChecker::onFinish(const GeodesicSolver& solver) {

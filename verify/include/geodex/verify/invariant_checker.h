@@ -7,6 +7,9 @@
 //     (source height ≥ 0, |d0 − d1| ≤ b1 − b0 + ε); the two distances agree at every Eq. 1
 //     breakpoint. (Elsewhere neighbours may legitimately disagree mid-run: the ends of an
 //     incoming interval's range are where the wavefront has not arrived yet.)
+//   Both tiers look at what the update rewrote and its neighbours, once they have seen that the
+//     rest of the list is the same intervals as before (then it holds from the updates that
+//     wrote it); when it is not, or the event does not say, at the whole list.
 //   full tier (adds): the pointwise-min property — the list after the update equals the minimum
 //     of the list before and the incoming interval, sampled along the edge (except inside the
 //     tiny intervals step 3 removed, where a neighbour's values stand in by the paper's
@@ -72,6 +75,10 @@ class InvariantChecker : public SolverObserver {
   /// Checks one list as the cheap tier does; returns the name of the first broken invariant and
   /// a description in `why`, or "" if the list is well formed. Usable on its own (tests, fuzzers).
   static std::string checkList(std::span<const Interval> list, double edgeLength, std::string& why);
+  /// The same on list[lo, hi) and the pairs they form, the ends of the edge only when the range
+  /// reaches them: what an update can have broken when the rest of the list is as it was.
+  static std::string checkListRange(std::span<const Interval> list, std::size_t lo, std::size_t hi,
+                                    double edgeLength, std::string& why);
 
  private:
   enum Id { Sorted, InRange, NoOverlap, NoTinyGap, NoTinyInterval, FiniteNonNegative, RealSource,
@@ -82,6 +89,7 @@ class InvariantChecker : public SolverObserver {
   bool throw_;
   std::vector<InvariantTally> tallies_;
   std::unique_ptr<InvariantViolation> first_;
+  std::vector<double> samples_, ends_;  // the pointwise-minimum samples, reused between updates
 };
 
 /// Writes a violation as a text reproducer `geodex repro` reads back (format in docs/fuzzing.md).
