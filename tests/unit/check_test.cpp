@@ -188,5 +188,24 @@ TEST(CheckRegression, ScaleInvarianceIsJudgedOnlyWhereEveryValueScalesExactly) {
   EXPECT_TRUE(v.interesting && v.ok()) << v.failed << ": " << v.message;
 }
 
+// A source 1e302 face sizes from a face 1.4e-35 across (in its mesh units: 1.2e302 from a face of
+// size 1.2): the collinearity products overflow and the tree took s, b0 and v1 as collinear (G4)
+// where the exact tree says inside the wedge. No mesh geodex accepts can put a source there
+// (tol::kMaxSourceDistanceInFaceSizes, 3e110): outside propagateLocal's contract, skipped
+// (corpus/fuzz_propagation/regress/exact-predicates-source-1e302-face-sizes-away-outside-the-solvers-range).
+TEST(CheckRegression, APropagationWithASourceFartherThanAnyMeshCanPutItIsOutsideTheSolversRange) {
+  const PropagationCase c = propagationCase(Vec3(0, 0, 1.4482826745237228e-35), Vec3(0, 0, 0),
+                                            Vec3(0, 1.1210387714598537e-44, 0), 0.0, 1.4482826745237228e-35,
+                                            Vec2(-1.4181298336770849e+267, 1.4181298336770849e+267), 0.0);
+  const Verdict v = checkPropagation(c);
+  EXPECT_TRUE(v.ok()) << v.failed << ": " << v.message;
+  EXPECT_FALSE(v.interesting) << v.summary;
+  // 1e100 face sizes away, within what a mesh can have, it is judged, and judged right.
+  PropagationCase near = c;
+  near.window.source = Vec2(-1.4482826745237228e+65, 1.4482826745237228e+65);
+  const Verdict w = checkPropagation(near);
+  EXPECT_TRUE(w.interesting && w.ok()) << w.failed << ": " << w.message;
+}
+
 }  // namespace
 }  // namespace geodex::verify

@@ -1278,14 +1278,16 @@ std::optional<PropagationCase> inMeshUnits(const PropagationCase& c, MeshUnit& u
   double largest = 0.0;
   for (const Vec3& p : c.face) largest = std::max(largest, p.cwiseAbs().maxCoeff());
   unit = meshUnitOf(largest);
+  // (Tested by exponent before multiplying: debug test runs trap an overflow.)
+  const MeshUnit toMeshUnits{-unit.exponent, unit.inverse, unit.unit};
+  for (double x : {c.window.b0, c.window.b1, c.window.source.x(), c.window.source.y(), c.window.sigma})
+    if (!std::isfinite(x) || inFileUnitsRange(x, toMeshUnits) == ScaledRange::Overflow) return std::nullopt;
   PropagationCase m = c;
   for (Vec3& p : m.face) p *= unit.inverse;
   m.window.b0 *= unit.inverse;
   m.window.b1 *= unit.inverse;
   m.window.source *= unit.inverse;
   m.window.sigma *= unit.inverse;
-  for (double x : {m.window.b0, m.window.b1, m.window.source.x(), m.window.source.y(), m.window.sigma})
-    if (!std::isfinite(x)) return std::nullopt;
   return m;
 }
 
@@ -1306,9 +1308,15 @@ Verdict checkPropagation(const PropagationCase& input) {
   MeshUnit unit;
   const auto inUnits = inMeshUnits(input, unit);
   if (!inUnits) return v.summary = "a value is beyond the largest double in mesh units: outside the solver's range", v;
-  v.interesting = true;
   const PropagationCase& c = *inUnits;
   const LocalWindow w = localWindowOf(c);
+  // A source farther than any mesh the solver accepts can put it (docs/numerics.md, step 2) is
+  // outside propagateLocal's contract: its products of four lengths overflow (a source 1e302
+  // face sizes away read as collinear with everything).
+  const double faceSize = std::max({w.edgeLength, std::abs(w.apex.x()), std::abs(w.apex.y())});
+  if (!(std::max(std::abs(w.source.x()), std::abs(w.source.y())) <= tol::kMaxSourceDistanceInFaceSizes * faceSize))
+    return v.summary = "the source is farther from the face than any mesh can put it: outside the solver's range", v;
+  v.interesting = true;
   LocalPropagation r;
   try {
     r = propagateLocal(w);

@@ -66,7 +66,9 @@ struct LocalPropagation {
   std::array<LocalChild, 2> children{};
 };
 
-/// Runs the Fig. 6 decision tree and computes the new intervals' ranges. Pure function.
+/// Runs the Fig. 6 decision tree and computes the new intervals' ranges. Pure function. At any
+/// scale, for a configuration a mesh can have: the source within
+/// tol::kMaxSourceDistanceInFaceSizes of the face's size (a window of a solve always is).
 LocalPropagation propagateLocal(const LocalWindow& w);
 
 /// The local length scale the predicates of one case are relative to: the face's longest edge.

@@ -141,6 +141,13 @@ inline constexpr double kFlatVertexAngle = 1e-12;
 /// shorter than its extent is refused by name ('edge-length-spread').
 inline constexpr double kMinEdgeLengthRel = 1e-100;
 
+/// How far, in sizes of the face it crosses, a window's pseudo-source can be in a mesh geodex
+/// accepts: distances stay below 7 × 2^32 mesh units (every edge below 7, fewer than 2^32
+/// edges) and faces are at least kMinEdgeLengthRel across, hence 3e10 / 1e-100. Up to there the
+/// Fig. 6 products of four lengths stay below 1e221 at unit scale (propagateLocal's contract,
+/// which the fuzz checks keep to; beyond it |u|² alone overflows near 1e154 face sizes).
+inline constexpr double kMaxSourceDistanceInFaceSizes = 3e10 / kMinEdgeLengthRel;
+
 /// Barycentric or edge parameters within this of 0 or 1 snap a source or target onto the
 /// edge or vertex it is on. Ten times kCoincideRel: a source nearer a vertex or an edge than
 /// that is neither coincident with it for the Fig. 6 predicates nor clear of it — its windows
