@@ -42,6 +42,16 @@ double listDistance(std::span<const Interval> list, double x) {
   return best;
 }
 
+// |(x, 0) − source| of w, as Interval::d0 / d1 compute it for x = b0 / b1. Those use std::hypot,
+// which is a tenth of a cheap-tier solve; the plain root is as accurate (one rounding more) where
+// the squares cannot overflow or underflow, which is every list of a real solve (mesh units).
+double sourceDistance(const Interval& w, double x) {
+  const double dx = std::abs(x - w.source.x()), dy = w.source.y();
+  constexpr double kLarge = 1e150, kSmall = 1e-150;
+  if (dx < kLarge && dy < kLarge && (dx > kSmall || dy > kSmall)) return std::sqrt(dx * dx + dy * dy);
+  return std::hypot(dx, dy);
+}
+
 // The same interval: everything the invariants read, and the propagation state.
 bool sameInterval(const Interval& a, const Interval& b) {
   return a.b0 == b.b0 && a.b1 == b.b1 && a.source == b.source && a.sigma == b.sigma &&
@@ -140,11 +150,12 @@ std::string InvariantChecker::checkListRange(std::span<const Interval> list, std
         os << "interval " << i << " " << describe(w) << " is shorter than epsilon = " << tiny;
       });
     }
-    const double rounding = tol::kRoundingRel * std::max(w.d0(), w.d1());
-    if (w.source.y() < 0.0 || std::abs(w.d0() - w.d1()) > (w.b1 - w.b0) + tiny + rounding) {
+    const double d0 = sourceDistance(w, w.b0), d1 = sourceDistance(w, w.b1);
+    const double rounding = tol::kRoundingRel * std::max(d0, d1);
+    if (w.source.y() < 0.0 || std::abs(d0 - d1) > (w.b1 - w.b0) + tiny + rounding) {
       return fail("real-source", [&](std::ostream& os) {
         os << "interval " << i << " " << describe(w) << " has no real unfolded source (|d0-d1| = "
-           << std::abs(w.d0() - w.d1()) << ")";
+           << std::abs(d0 - d1) << ")";
       });
     }
     if (i == lo) continue;
@@ -229,10 +240,19 @@ void InvariantChecker::onEdgeUpdate(const EdgeUpdateEvent& e) {
   // of either interval beside it, so a near window's end is carried across a gap as wide as a
   // far neighbour's ε (corpus/fuzz_edge_update/regress/pointwise-min-gap-sewn-by-the-far-neighbours-epsilon).
   // Steps 3–5 work on the rewritten part and its neighbours, which beforeNear holds.
+  // The uniform samples cover where the two lists differ and where the incoming interval reaches.
+  // Beyond that the neighbours are the same intervals before and after (changedRange compared
+  // them) and no incoming value is there, so the minimum holds by itself (their pieces still get
+  // a midpoint below).
   double from = e.incoming.b0, to = e.incoming.b1;
-  for (const auto part : {beforeNear, afterNear})
+  const std::span<const Interval> rewrittenParts[] = {
+      e.before.subspan(changed.beforeLo, changed.beforeHi - changed.beforeLo),
+      e.after.subspan(changed.afterLo, changed.afterHi - changed.afterLo)};
+  for (const auto part : rewrittenParts)
     if (!part.empty()) from = std::min(from, part.front().b0), to = std::max(to, part.back().b1);
   from -= tiny, to += tiny;
+  // The samples, sorted, so that one sweep over each list finds the intervals at every sample
+  // (a binary search per sample and list was a third of a full-tier solve).
   std::vector<double>& xs = samples_;
   xs.clear();
   const int uniform = 32;
@@ -248,8 +268,18 @@ void InvariantChecker::onEdgeUpdate(const EdgeUpdateEvent& e) {
   for (const Interval& w : beforeNear) ends.insert(ends.end(), {w.b0, w.b1});
   for (const Interval& w : afterNear) ends.insert(ends.end(), {w.b0, w.b1});
   std::sort(ends.begin(), ends.end());
+  const std::size_t numUniform = xs.size();
   for (std::size_t i = 0; i + 1 < ends.size(); ++i)
     if (ends[i + 1] > ends[i]) xs.push_back(0.5 * (ends[i] + ends[i + 1]));
+  merged_.resize(xs.size());
+  std::merge(xs.begin(), xs.begin() + static_cast<std::ptrdiff_t>(numUniform),
+             xs.begin() + static_cast<std::ptrdiff_t>(numUniform), xs.end(), merged_.begin());
+  xs.swap(merged_);
+  // The last interval of each list starting at or before the sample (-1: none), for sorted
+  // lists as lastStartingBefore finds it; advanced from one sample to the next.
+  std::ptrdiff_t kBefore = xs.empty() ? -1 : lastStartingBefore(e.before, xs.front());
+  std::ptrdiff_t kAfter = xs.empty() ? -1 : lastStartingBefore(e.after, xs.front());
+  const std::ptrdiff_t numBefore = std::ssize(e.before), numAfter = std::ssize(e.after);
   double worst = 0.0;
   std::array<double, 4> worstAt{};  // x, the list's value, the strict and the loose minimum
   auto valueWithSlack = [&](const Interval& w, double x) {
@@ -261,27 +291,32 @@ void InvariantChecker::onEdgeUpdate(const EdgeUpdateEvent& e) {
     return false;
   };
   for (double x : xs) {
+    while (kBefore + 1 < numBefore && e.before[kBefore + 1].b0 <= x) ++kBefore;
+    while (kAfter + 1 < numAfter && e.after[kAfter + 1].b0 <= x) ++kAfter;
     if (insideRemovedTiny(x)) continue;
     // strict: the minimum of the functions where they really are; loose: the minimum with the
     // slack step 4 may sew; candidates: every value the repaired list may take at x (a sewn end
     // is one function's value carried across the gap).
-    double strict = e.incoming.b0 <= x && x <= e.incoming.b1 ? e.incoming.distanceAt(x) : INFINITY;
+    // (Each function is evaluated once per sample: strict and loose share the value.)
     double loose = valueWithSlack(e.incoming, x);
+    double strict = e.incoming.b0 <= x && x <= e.incoming.b1 ? loose : INFINITY;
     std::array<double, 5> candidates{};
     std::size_t numCandidates = 0;
     if (std::isfinite(loose)) candidates[numCandidates++] = loose;
     // The old list is sorted: only intervals next to the one starting last before x can reach x,
     // even with the sewing slack.
-    const std::ptrdiff_t k = lastStartingBefore(e.before, x);
-    for (std::ptrdiff_t i = std::max<std::ptrdiff_t>(0, k - 1);
-         i <= std::min<std::ptrdiff_t>(k + 1, std::ssize(e.before) - 1); ++i) {
+    for (std::ptrdiff_t i = std::max<std::ptrdiff_t>(0, kBefore - 1);
+         i <= std::min<std::ptrdiff_t>(kBefore + 1, numBefore - 1); ++i) {
       const Interval& w = e.before[i];
-      if (w.b0 <= x && x <= w.b1) strict = std::min(strict, w.distanceAt(x));
       const double v = valueWithSlack(w, x);
+      if (w.b0 <= x && x <= w.b1) strict = std::min(strict, v);
       if (std::isfinite(v)) candidates[numCandidates++] = v;
       loose = std::min(loose, v);
     }
-    const double got = listDistance(e.after, x);
+    // Only the interval starting last before x and its left neighbour can cover x (listDistance).
+    double got = INFINITY;
+    for (std::ptrdiff_t i = std::max<std::ptrdiff_t>(0, kAfter - 1); i <= kAfter; ++i)
+      if (x >= e.after[i].b0 && x <= e.after[i].b1) got = std::min(got, e.after[i].distanceAt(x));
     double err = 0.0;
     if (!std::isfinite(got)) {
       err = std::isfinite(strict) ? INFINITY : 0.0;  // coverage lost
@@ -299,7 +334,10 @@ void InvariantChecker::onEdgeUpdate(const EdgeUpdateEvent& e) {
       if (std::isfinite(strict)) match = std::min(match, std::abs(got - strict));
       const double below = std::max(0.0, loose - got);
       const double above = std::isfinite(strict) ? std::max(0.0, got - strict) : 0.0;
-      err = std::max({match, below, above}) / scale;
+      // (Compared before dividing: only a new worst needs the relative error.)
+      const double off = std::max({match, below, above});
+      if (off <= worst * scale) continue;
+      err = off / scale;
     }
     if (!(err <= worst)) worst = err, worstAt = {x, got, strict, loose};
   }

@@ -89,7 +89,9 @@ class InvariantChecker : public SolverObserver {
   bool throw_;
   std::vector<InvariantTally> tallies_;
   std::unique_ptr<InvariantViolation> first_;
-  std::vector<double> samples_, ends_;  // the pointwise-minimum samples, reused between updates
+  // The pointwise-minimum samples (uniform, then between endpoints, then both merged), reused
+  // between updates.
+  std::vector<double> samples_, ends_, merged_;
 };
 
 /// Writes a violation as a text reproducer `geodex repro` reads back (format in docs/fuzzing.md).
