@@ -12,7 +12,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   using namespace geodex;
   const auto c = fuzz::decodeAs<verify::TwoFaceCase>(fuzz::FuzzTarget::TwoFaces, data, size);
   if (!c) return 0;
-  fuzz::require(verify::checkTwoFaces(*c, verify::CheckDepth::Fuzzing), fuzz::FuzzTarget::TwoFaces,
+  fuzz::require(verify::checkTwoFaces(*c), fuzz::FuzzTarget::TwoFaces,
                 data, size);
   return 0;
 }

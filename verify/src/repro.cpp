@@ -1733,7 +1733,7 @@ double viaSegment(const Vec3& s, const Vec3& q, const Vec3& a, const Vec3& b) {
 
 }  // namespace
 
-Verdict checkTwoFaces(const TwoFaceCase& c, CheckDepth) {
+Verdict checkTwoFaces(const TwoFaceCase& c) {
   Verdict v;
   v.interesting = true;
   auto mesh = buildMesh(c.soup, v);
@@ -1818,7 +1818,7 @@ std::optional<std::vector<double>> planarReference(const Mesh& mesh, const Trian
 
 }  // namespace
 
-Verdict checkSolver(const SolverCase& c, CheckDepth depth) {
+Verdict checkSolver(const SolverCase& c) {
   Verdict v;
   v.interesting = true;
   auto meshOpt = buildMesh(c.soup, v);
@@ -1835,7 +1835,7 @@ Verdict checkSolver(const SolverCase& c, CheckDepth depth) {
   };
 
   GeodesicSolver solver(mesh);
-  InvariantChecker invariants(depth == CheckDepth::Full ? CheckLevel::Full : CheckLevel::Cheap, true);
+  InvariantChecker invariants(CheckLevel::Full, true);
   UnfoldingChecker unfolding(mesh, &invariants);
   solver.setObserver(&unfolding);
   if (!solveChecked(solver, c.sources, {}, v)) return v.message += where(), v;
@@ -2063,7 +2063,7 @@ Verdict checkMeshIo(const MeshIoCase& c) {
 
 // ===  Dispatch ==================================================================================
 
-Verdict check(const FuzzCase& c, CheckDepth depth) {
+Verdict check(const FuzzCase& c) {
   return std::visit(
       [&](const auto& x) -> Verdict {
         using T = std::decay_t<decltype(x)>;
@@ -2071,20 +2071,20 @@ Verdict check(const FuzzCase& c, CheckDepth depth) {
         else if constexpr (std::is_same_v<T, PredicateCase>) return checkPredicates(x);
         else if constexpr (std::is_same_v<T, EdgeUpdateCase>) return checkEdgeUpdate(x);
         else if constexpr (std::is_same_v<T, PropagationCase>) return checkPropagation(x);
-        else if constexpr (std::is_same_v<T, TwoFaceCase>) return checkTwoFaces(x, depth);
-        else return checkSolver(x, depth);
+        else if constexpr (std::is_same_v<T, TwoFaceCase>) return checkTwoFaces(x);
+        else return checkSolver(x);
       },
       c);
 }
 
-Verdict replay(FuzzTarget t, std::span<const std::uint8_t> bytes, CheckDepth depth) {
+Verdict replay(FuzzTarget t, std::span<const std::uint8_t> bytes) {
   const auto c = decode(t, bytes);
   if (!c) {
     Verdict v;
     v.summary = "skipped: the target does not test these bytes";
     return v;
   }
-  return check(*c, depth);
+  return check(*c);
 }
 
 // ===  Reproducers: files and targets ============================================================
@@ -2648,7 +2648,7 @@ int runRepro(const std::string& path, std::optional<FuzzTarget> target,
   }
   out << "target: " << name(*target) << "\n";
   describe(*target, bytes, out);
-  const Verdict v = replay(*target, bytes, CheckDepth::Full);
+  const Verdict v = replay(*target, bytes);
   if (svgPath) {
     std::ofstream svg(*svgPath);
     writeSvg(*target, bytes, svg);
