@@ -77,7 +77,7 @@ GEODEX_RC_GTEST_PROP(Algorithm2, KeepsTheListWellFormedAndThePointwiseMinimum, k
                      ()) {
   const IntervalListCase c = *gen::intervalListCase();
   const DegeneracyCounters found = runAndCheck(c);
-  RC_TAG(c.target);
+  RC_TAG(c.target, c.mirrored ? "mirrored" : "as made");
   RC_CLASSIFY(found[DegeneracyKind::D1] > 0, "hit D1");
   RC_CLASSIFY(found[DegeneracyKind::D2] > 0, "hit D2");
   RC_CLASSIFY(found[DegeneracyKind::D3] > 0, "hit D3");
@@ -88,9 +88,9 @@ GEODEX_RC_GTEST_PROP(Algorithm2, KeepsTheListWellFormedAndThePointwiseMinimum, k
 // source distance is 1e3–1e7 edge lengths): run often enough for the coverage gate.
 GEODEX_RC_GTEST_PROP(Algorithm2, FarSourceAgainstNearSourceKeepsThePointwiseMinimum,
                      kLocalPropertyWeight, ()) {
-  const IntervalListCase c = *gen::mismatchedEndpointList();
+  const IntervalListCase c = *gen::orMirrored(gen::mismatchedEndpointList());
   const DegeneracyCounters found = runAndCheck(c);
-  RC_TAG(c.target);
+  RC_TAG(c.target, c.mirrored ? "mirrored" : "as made");
   RC_CLASSIFY(found[DegeneracyKind::D4] > 0, "hit D4");
 }
 

@@ -52,7 +52,7 @@ bool contains(const std::vector<Fig6Branch>& leaves, Fig6Branch b) {
 // configurations farther than ε from every degeneracy must be decided as exact geometry does.
 GEODEX_RC_GTEST_PROP(Fig6, BranchMatchesExactlyEvaluatedPredicates, kLocalPropertyWeight, ()) {
   const LocalCase c = *gen::localCase();
-  RC_TAG(name(c.target), name(c.nearness));
+  RC_TAG(name(c.target), name(c.nearness), c.mirrored ? "mirrored" : "as made");
   const LocalPropagation r = propagateLocal(c.window);
   recordLocal(r.branch);
 
@@ -194,7 +194,7 @@ std::string shadowViolation(const LocalWindow& w, const LocalPropagation& r) {
 
 GEODEX_RC_GTEST_PROP(Fig6, ChildrenCoverExactlyTheWedgeShadow, kLocalPropertyWeight, ()) {
   const LocalCase c = *gen::localCase();
-  RC_TAG(name(c.target), name(c.nearness));
+  RC_TAG(name(c.target), name(c.nearness), c.mirrored ? "mirrored" : "as made");
   const LocalPropagation r = propagateLocal(c.window);
   recordLocal(r.branch);
   const std::string why = shadowViolation(c.window, r);
@@ -265,7 +265,7 @@ TEST(Fig6Oracles, ExactTreeAgreesWithHandWorkedCases) {
 // the leaf must stay the same wherever exact predicates decide the case before and after alike.
 GEODEX_RC_GTEST_PROP(Fig6, DecisionsAreScaleInvariant, kLocalPropertyWeight, ()) {
   const LocalCase c = *gen::localCase();
-  RC_TAG(name(c.target), name(c.nearness));
+  RC_TAG(name(c.target), name(c.nearness), c.mirrored ? "mirrored" : "as made");
   const bool powerOfTwo = *rc::gen::arbitrary<bool>();
   const double factor =
       powerOfTwo ? std::ldexp(1.0, *gen::uniformInt(-20, 21)) : *rc::gen::element(1e-6, 1e6);

@@ -34,6 +34,7 @@
 #include <limits>
 #include <numbers>
 #include <numeric>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -129,13 +130,16 @@ struct LocalCase {
   Nearness nearness = Nearness::Exact;
   Axis axis = Axis::None;
   double k = 0.0;  ///< the multiple of ulp or ε, signed (the side)
+  /// Reflected through the perpendicular bisector of e0 (x → L − x) after it was made, the target
+  /// with it (G2 ↔ G3, G4 ↔ G5): every one-sided configuration is also run as its mirror image.
+  bool mirrored = false;
 };
 
 inline void showValue(const LocalCase& c, std::ostream& os) {
   const LocalWindow& w = c.window;
   os.precision(17);
   os << name(c.target) << " " << name(c.coords) << " " << name(c.nearness) << " " << name(c.axis)
-     << " k=" << c.k << "\n  LocalWindow{" << w.edgeLength << ", Vec2(" << w.apex.x() << ", "
+     << " k=" << c.k << (c.mirrored ? " mirrored" : "") << "\n  LocalWindow{" << w.edgeLength << ", Vec2(" << w.apex.x() << ", "
      << w.apex.y() << "), " << w.b0 << ", " << w.b1 << ", Vec2(" << w.source.x() << ", "
      << w.source.y() << ")}";
 }
@@ -145,11 +149,13 @@ struct IntervalListCase {
   double edgeLength = 1.0;
   std::vector<Interval> inserts;
   const char* target = "";
+  bool mirrored = false;  ///< reflected along the edge (x → L − x) after it was made
 };
 
 inline void showValue(const IntervalListCase& c, std::ostream& os) {
   os.precision(17);
-  os << c.target << " on an edge of length " << c.edgeLength << ", inserting:";
+  os << c.target << (c.mirrored ? " mirrored" : "") << " on an edge of length " << c.edgeLength
+     << ", inserting:";
   for (const Interval& w : c.inserts) {
     os << "\n  [" << w.b0 << ", " << w.b1 << "] s=(" << w.source.x() << ", " << w.source.y()
        << ") sigma=" << w.sigma << (w.fullyPropagated() ? " propagated" : "");
@@ -492,8 +498,33 @@ inline bool perturb(LocalCase& c) {
 
 }  // namespace detail
 
-/// A local configuration aimed at `target`.
-inline rc::Gen<LocalCase> localCase(LocalTarget target) {
+namespace detail {
+
+inline LocalTarget mirrorOf(LocalTarget t) {
+  switch (t) {
+    case LocalTarget::G2: return LocalTarget::G3;
+    case LocalTarget::G3: return LocalTarget::G2;
+    case LocalTarget::G4: return LocalTarget::G5;
+    case LocalTarget::G5: return LocalTarget::G4;
+    case LocalTarget::SAtB0AtV0: return LocalTarget::SAtB1AtV2;
+    case LocalTarget::SAtB1AtV2: return LocalTarget::SAtB0AtV0;
+    default: return t;
+  }
+}
+
+/// The mirror image of w through the perpendicular bisector of e0 (v0 and v2 trade places), when
+/// it is still a valid window after rounding L − x (exact on the lattice).
+inline std::optional<LocalWindow> mirrored(const LocalWindow& w) {
+  const double L = w.edgeLength;
+  LocalWindow m{L, Vec2(L - w.apex.x(), w.apex.y()), L - w.b1, L - w.b0,
+                Vec2(L - w.source.x(), w.source.y())};
+  if (!(m.b0 >= 0.0 && m.b0 < m.b1 && m.b1 <= L && isFinite(m.source) && isFinite(m.apex)))
+    return std::nullopt;
+  return m;
+}
+
+/// A local configuration aimed at `target`, as made (not mirrored).
+inline rc::Gen<LocalCase> unmirroredLocalCase(LocalTarget target) {
   return rc::gen::exec([target] {
     LocalCase c;
     c.target = target;
@@ -522,6 +553,23 @@ inline rc::Gen<LocalCase> localCase(LocalTarget target) {
     c.nearness = Nearness::Exact;  // the move left the domain (e.g. b0 < 0): keep it exact
     c.axis = Axis::None;
     c.k = 0.0;
+    return c;
+  });
+}
+
+}  // namespace detail
+
+/// A local configuration aimed at `target`, or its mirror image aimed at the mirrored target (half
+/// the time): the generators move b0 and its side of the wedge, the mirror covers b1's.
+inline rc::Gen<LocalCase> localCase(LocalTarget target) {
+  return rc::gen::exec([target] {
+    LocalCase c = *detail::unmirroredLocalCase(target);
+    if (!*rc::gen::arbitrary<bool>()) return c;
+    if (const auto m = detail::mirrored(c.window)) {
+      c.window = *m;
+      c.target = detail::mirrorOf(c.target);
+      c.mirrored = true;
+    }
     return c;
   });
 }
@@ -791,16 +839,47 @@ inline rc::Gen<IntervalListCase> randomList() {
   });
 }
 
+namespace detail {
+
+/// The scenario reflected along its edge (x → L − x, each list in reverse order of position), when
+/// every interval stays valid after rounding L − x.
+inline std::optional<IntervalListCase> mirrored(const IntervalListCase& c) {
+  IntervalListCase m = c;
+  const double L = c.edgeLength;
+  for (Interval& w : m.inserts) {
+    const double b0 = L - w.b1, b1 = L - w.b0;
+    if (!(b0 >= 0.0 && b0 < b1 && b1 <= L)) return std::nullopt;
+    w.b0 = b0;
+    w.b1 = b1;
+    w.source.x() = L - w.source.x();
+  }
+  m.mirrored = true;
+  return m;
+}
+
+}  // namespace detail
+
+/// `scenarios` or, half the time, its mirror image: the scenarios put their slivers, overlaps and
+/// gaps at chosen ends, the mirror puts them at the others.
+inline rc::Gen<IntervalListCase> orMirrored(rc::Gen<IntervalListCase> scenarios) {
+  return rc::gen::exec([scenarios] {
+    IntervalListCase c = *scenarios;
+    if (!*rc::gen::arbitrary<bool>()) return c;
+    const auto m = detail::mirrored(c);
+    return m ? *m : c;
+  });
+}
+
 /// Any of the interval-list scenarios, the D cases weighted up.
 inline rc::Gen<IntervalListCase> intervalListCase() {
-  return rc::gen::weightedOneOf<IntervalListCase>({{3, tinyIntervalList()},
+  return orMirrored(rc::gen::weightedOneOf<IntervalListCase>({{3, tinyIntervalList()},
                                                    {3, tinyOverlapList()},
                                                    {3, tinyGapList()},
                                                    {4, mismatchedEndpointList()},
                                                    {2, sameSourceList()},
                                                    {2, tangentList()},
                                                    {2, coveringList()},
-                                                   {2, randomList()}});
+                                                   {2, randomList()}}));
 }
 
 // ===  Meshes =====================================================================================
