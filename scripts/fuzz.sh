@@ -70,8 +70,11 @@ for target in "${targets[@]}"; do
   execs=${execs:-0} cov=${cov:-?} ft=${ft:-?} secs=${secs:-$budget}
   rate=$((execs / (secs > 0 ? secs : 1)))
 
-  # Keep what added coverage.
-  "$bin" -merge=1 -max_len="$max_len" "$work/corpus" "$work/new" >"$work/merge.log" 2>&1 || true
+  # Keep what added coverage. An input of the work corpus that fails a check added since it was
+  # kept makes the merge crash and restart: its artifact joins this run's findings (without the
+  # prefix libFuzzer wrote it to the current directory, the checkout).
+  "$bin" -merge=1 -max_len="$max_len" -artifact_prefix="$work/artifacts/" "$work/corpus" "$work/new" \
+    >"$work/merge.log" 2>&1 || true
   corpus_size=$(find "$work/corpus" -type f | wc -l)
 
   # Findings: name each artifact after the check it fails (or the sanitizer's summary), minimize
