@@ -252,7 +252,7 @@ void InvariantChecker::onEdgeUpdate(const EdgeUpdateEvent& e) {
     if (!part.empty()) from = std::min(from, part.front().b0), to = std::max(to, part.back().b1);
   from -= tiny, to += tiny;
   // The samples, sorted, so that one sweep over each list finds the intervals at every sample
-  // (a binary search per sample and list was a third of a full-tier solve).
+  // (rather than a binary search per sample and list, each a cache miss or two).
   std::vector<double>& xs = samples_;
   xs.clear();
   const int uniform = 32;
