@@ -139,9 +139,9 @@ inline void showValue(const LocalCase& c, std::ostream& os) {
   const LocalWindow& w = c.window;
   os.precision(17);
   os << name(c.target) << " " << name(c.coords) << " " << name(c.nearness) << " " << name(c.axis)
-     << " k=" << c.k << (c.mirrored ? " mirrored" : "") << "\n  LocalWindow{" << w.edgeLength << ", Vec2(" << w.apex.x() << ", "
-     << w.apex.y() << "), " << w.b0 << ", " << w.b1 << ", Vec2(" << w.source.x() << ", "
-     << w.source.y() << ")}";
+     << " k=" << c.k << (c.mirrored ? " mirrored" : "") << "\n  LocalWindow{" << w.edgeLength
+     << ", Vec2(" << w.apex.x() << ", " << w.apex.y() << "), " << w.b0 << ", " << w.b1
+     << ", Vec2(" << w.source.x() << ", " << w.source.y() << ")}";
 }
 
 /// One Algorithm 2 scenario on one edge: the intervals are inserted in order, each with a fresh id.
@@ -495,10 +495,6 @@ inline bool perturb(LocalCase& c) {
   return w.b0 >= 0.0 && w.b0 < w.b1 && w.b1 <= w.edgeLength && w.source.y() <= 0.0 &&
          w.apex.y() >= 0.0 && isFinite(w.source) && isFinite(w.apex);
 }
-
-}  // namespace detail
-
-namespace detail {
 
 inline LocalTarget mirrorOf(LocalTarget t) {
   switch (t) {
