@@ -124,9 +124,8 @@ LocalPropagation propagateLocal(const LocalWindow& w) {
   // A face far from unit size is decided at unit scale (atUnitScale), so that the collinearity
   // tests' products of four lengths (sideOfRay) neither under- nor overflow: a face at 1e-106
   // decided G2 where the exact tree says G3 (corpus/fuzz_propagation/regress/exact-predicates-
-  // face-at-1e-106-fourth-powers-underflow). Inside the band the configuration is used as it is
-  // (no copy: one per call was most of what mesh units cost a solve): scaling by a power of two
-  // commutes with every operation here (the square roots are of squares) while no product
+  // face-at-1e-106-fourth-powers-underflow). Inside the band the configuration is used as it is:
+  // scaling by a power of two commutes with every operation here (the square roots are of squares) while no product
   // leaves the normal range, so either way gives the same bits unless a value is 2^100 times
   // smaller than the face — far below anything the solver keeps (D1). atUnitScale lands in the
   // band, so this recurses once at most.

@@ -96,9 +96,14 @@ TEST(InvariantChecker, MismatchAtAnEq1BreakpointFails) {
 
 // The checker looks again only at what an update rewrote and its neighbours, trusting the rest
 // to be as the updates before left it: that trust is checked, not taken from the report.
+// Three windows side by side over the whole edge, each with its source above its middle.
+std::vector<Interval> threeWindows() {
+  return {make(0, 2, Vec2(1, 1)), make(2, 4, Vec2(3, 1)), make(4, kL, Vec2(7, 1))};
+}
+
 TEST(InvariantChecker, AnUpdateThatWritesOutsideTheRangeItReportsIsCheckedWhole) {
   Update u;
-  u.before = {make(0, 2, Vec2(1, 1)), make(2, 4, Vec2(3, 1)), make(4, kL, Vec2(7, 1))};
+  u.before = threeWindows();
   u.incoming = make(4, kL, Vec2(7, 1));
   u.after = u.before;
   u.report.first = 2, u.report.last = 3;  // "only the last interval was rewritten"
@@ -109,7 +114,7 @@ TEST(InvariantChecker, AnUpdateThatWritesOutsideTheRangeItReportsIsCheckedWhole)
 
 TEST(InvariantChecker, APairFormedWithTheNeighbourOfTheRewrittenPartIsChecked) {
   Update u;
-  u.before = {make(0, 2, Vec2(1, 1)), make(2, 4, Vec2(3, 1)), make(4, kL, Vec2(7, 1))};
+  u.before = threeWindows();
   u.incoming = make(3.5, kL, Vec2(7, 1));
   u.after = u.before;
   u.after[2].b0 = 3.5;  // rewritten to overlap its unchanged left neighbour
