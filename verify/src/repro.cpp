@@ -1480,6 +1480,11 @@ Verdict checkEdgeUpdate(const EdgeUpdateCase& input) {
   const auto inUnits = inMeshUnits(input);
   if (!inUnits) return v.summary = "a value would be subnormal in mesh units: outside the solver's range", v;
   const EdgeUpdateCase& c = *inUnits;
+  // The list must be one step 6 accepts where Algorithm 2 works, in mesh units: its checks square
+  // lengths, which underflow at 1e-220 (a sliver 1e4 of its length from a source looked as short
+  // as its σ, so no neighbour could take it, in file units only).
+  if (std::string why; !InvariantChecker::checkList(c.before, c.edgeLength, why).empty())
+    return v.summary = "the list before breaks step 6 in mesh units: " + why, v;
   v.interesting = true;
   EdgeIntervals list;
   list.assign(c.before);
