@@ -169,8 +169,11 @@ void edgeUpdateSeeds() {
   // (b0, b1, source x, y, σ). ε = 1e-11 × 16 here (sources within 16 of the edge).
   const auto left = iv(zero, n(8), n(4), n(2), zero, kPropagated);
   const auto right = iv(zero, n(8), n(12), n(2), zero, kPropagated);
+  // A sliver a hair shorter than both neighbours where they meet (√20 at x = 8), as the rounding
+  // D1 stands for: a sliver far below them is a distance they lack, and step 3 keeps it.
+  const Q justBelow = Q::exact(std::sqrt(20.0) * (1.0 - 1e-13));
   edgeUpdate("D1-tiny-sliver-won-by-incoming", {K::D1}, 16, {left, right},
-             iv(n(8), n(8).nudged(2, Nudge::TinyInterval, true), n(8), Q::exact(1e-3), zero));
+             iv(n(8), n(8).nudged(2, Nudge::TinyInterval, true), n(8), justBelow, zero));
   edgeUpdate("D1-tiny-remainder-of-split-old-interval", {K::D1}, 16, {left, right},
              iv(n(0), n(8).nudged(-2, Nudge::TinyInterval, true), n(4), n(1), zero));
   edgeUpdate("D2-tiny-overlap-at-incoming-start", {K::D2}, 16, {left},
@@ -230,7 +233,7 @@ void edgeUpdateSeeds() {
              {iv(zero, n(16), n(-32).times8(6), n(32).times8(6), zero, kPropagated)},
              iv(n(0), n(16), n(8), n(2), n(64).times8(5)), 20);
   edgeUpdate("tiny-edge-scaled-1e-6", {K::D1}, 16, {left, right},
-             iv(n(8), n(8).nudged(2, Nudge::TinyInterval, true), n(8), Q::exact(1e-3), zero), -20);
+             iv(n(8), n(8).nudged(2, Nudge::TinyInterval, true), n(8), justBelow, zero), -20);
 }
 
 // ===  Meshes: sources ==========================================================================

@@ -17,10 +17,21 @@ bool sameSource(const Interval& p, const Interval& q, double edgeLength) {
          (p.source - q.source).squaredNorm() <= tol * tol;
 }
 
-// The incoming interval is shorter at x by more than the tie tolerance.
+// Whether the incoming distance f beats the old one g at a point: shorter by more than the tie
+// tolerance, or within it and from a pseudo-source reached earlier (σ smaller by more than it).
+// The second makes a tie independent of the order the two arrive in: a source and the saddles on
+// one straight line from it (σ growing along it) tie within rounding for 1e-7 of the edge around
+// where the line crosses it, and whichever came first kept that stretch; the windows on the next
+// edge, cast from different sources through a breakpoint off the line, then left gaps of 2e-9 to
+// 5e-9 between them (corpus/fuzz_solver/regress/full-coverage-ties-of-collinear-pseudo-sources-
+// kept-in-arrival-order). The smaller σ is the one the triangle inequality says is never longer.
+bool incomingBeats(double f, double g, const Interval& incoming, const Interval& old) {
+  const double tie = tol::kTieRel * g;
+  return f < g - tie || (f <= g + tie && incoming.sigma < old.sigma - tie);
+}
+
 bool incomingWins(const Interval& incoming, const Interval& old, double x) {
-  const double g = old.distanceAt(x);
-  return incoming.distanceAt(x) < g - tol::kTieRel * g;
+  return incomingBeats(incoming.distanceAt(x), old.distanceAt(x), incoming, old);
 }
 
 void markChanged(Interval& w) { w.flags |= Interval::kChanged; }
@@ -101,7 +112,7 @@ void keepShorter(const Interval& in, const Interval& old, double edgeLength,
   for (int k = 0; k < numSamples; ++k) {
     f[k] = in.distanceAt(sample[k]);
     g[k] = old.distanceAt(sample[k]);
-    wins[k] = f[k] < g[k] - tol::kTieRel * g[k];  // as incomingWins
+    wins[k] = incomingBeats(f[k], g[k], in, old);
   }
   // Where the two distances agree at an end of the piece up to rounding (both windows through
   // the same point, typically a vertex or a shared boundary ray), the tie there says nothing
@@ -394,49 +405,52 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
     Interval* const L = out.data();
     m = out.size();
     const bool atFront = s0 == 0, atBack = s1 == n;
+    const Interval* const outerPrev = atFront ? nullptr : &list_[s0 - 1];
+    const Interval* const outerNext = atBack ? nullptr : &list_[s1];
 
-    // Steps 3 and 4 repeat while step 4 changes anything: an interval that grows over a sewn gap
-    // can come to touch a coarser neighbour and be a D1 sliver next to it (fuzz_edge_update).
-    // (Until 2026-11-22 nothing set `sewn`, and they ran once: a window from 4.4e12 away on a
-    // 6-long edge, sewn to a near window, stayed beside it shorter than its ε:
-    // corpus/fuzz_edge_update/regress/no-tiny-interval-short-edge-window-not-sewn-to-a-near-
-    // neighbour.) Each pass sews or resolves what it finds for good, and step 3 only removes, so
-    // this ends.
-    for (bool sewn = true; sewn;) {
-      sewn = false;
-      // --- Step 3: remove tiny intervals (D1), merging each into a neighbour that touches it. A
-      //     neighbour grown this way may itself still be tiny next to a coarser one: repeat until
-      //     nothing is (each pass removes at least one interval, so this ends). An interval's ε
-      //     depends on its pseudo-source only, which merging does not change.
+    // Steps 3–5 repeat while step 4 or 5 changes anything: an interval that grows over a sewn
+    // gap can come to touch a coarser neighbour and be a D1 sliver next to it
+    // (corpus/fuzz_edge_update/regress/no-tiny-interval-short-edge-window-not-sewn-to-a-near-
+    // neighbour), and one that step 5 merges with a piece of a near-equal source carries its own
+    // function over the piece's range, where it may take a sliver beside it (canTakeSliver) that
+    // the piece could not (corpus/fuzz_edge_update/regress/no-tiny-interval-step-5-merge-makes-a-
+    // sliver-takeable-after-step-3). Each pass sews or resolves what it finds for good, and steps
+    // 3 and 5 only remove, so this ends.
+    for (bool again = true; again;) {
+      again = false;
+      // --- Step 3: remove tiny intervals (D1), merging each into a neighbour that may grow over
+      //     it (canTakeSliver); one no neighbour may take is kept. A neighbour grown this way may
+      //     itself still be tiny next to a coarser one: repeat until nothing is (each pass removes
+      //     at least one interval, so this ends). An interval's ε depends on its pseudo-source
+      //     only, which merging does not change.
       for (bool removed = true; removed;) {
         removed = false;
         std::size_t w = 0;
-        double tinyKept = 0.0;                                         // ε of L[w − 1]
-        double tinyHere = m > 0 ? tinyLength(L[0], edgeLength) : 0.0;  // ε of L[r]
         for (std::size_t r = 0; r < m; ++r) {
-          const double tinyNext = r + 1 < m ? tinyLength(L[r + 1], edgeLength) : 0.0;
+          // L[r]'s neighbours: the last one kept and the next one, or the slice's outer ones (one
+          // of those taking L[r] makes step 3 remove it here; the update is then done again
+          // over a wider slice, where the neighbour can grow).
+          const Interval* const prev = w > 0 ? &L[w - 1] : outerPrev;
+          const Interval* const next = r + 1 < m ? &L[r + 1] : outerNext;
           // ε of L[r] itself, or a touching neighbour's ray-end precision when larger: a sliver
           // within that of a coarser window's end may be its rounding (tol::kRayEndRel). Not the
           // neighbour's whole ε: a longer sliver can be the start of a near saddle's shadow,
-          // which fans out downstream where the far rays never reach (tinyLengthInList is the
-          // same rule, for the checker).
-          double tiny = tinyHere;
-          if (w > 0 && L[w - 1].b1 >= L[r].b0 - tinyKept)
-            tiny = std::max(tiny, rayEndPrecision(L[w - 1], edgeLength));
-          if (r + 1 < m && L[r + 1].b0 <= L[r].b1 + tinyNext)
-            tiny = std::max(tiny, rayEndPrecision(L[r + 1], edgeLength));
+          // which fans out downstream where the far rays never reach. The checker applies the
+          // same rule (tinyLengthInList) to the whole list, so the outer neighbours count here.
+          const double tiny = tinyLengthBetween(prev, L[r], next, edgeLength);
           // An edge shorter than ε has nothing but D1 slivers: the last one left is the edge's
           // distance to the precision its source allows, and step 4 sews it to both ends.
           // Removing it too left the edge uncovered (corpus/fuzz_two_faces/regress/
           // full-coverage-edge-shorter-than-epsilon-lost-its-last-interval).
-          const bool lastOnShortEdge = edgeLength < tiny &&
-                                       (w == 0 || L[w - 1].b1 < L[r].b0 - tinyKept) &&
-                                       (r + 1 == m || L[r + 1].b0 > L[r].b1 + tinyNext);
-          if (L[r].length() >= tiny || lastOnShortEdge) {
+          const bool lastOnShortEdge =
+              edgeLength < tiny &&
+              (prev == nullptr || prev->b1 < L[r].b0 - tinyLength(*prev, edgeLength)) &&
+              (next == nullptr || next->b0 > L[r].b1 + tinyLength(*next, edgeLength));
+          const bool prevTakes = prev != nullptr && canTakeSliver(*prev, L[r], edgeLength);
+          const bool nextTakes = next != nullptr && canTakeSliver(*next, L[r], edgeLength);
+          if (L[r].length() >= tiny || lastOnShortEdge || !(prevTakes || nextTakes)) {
             if (w != r) L[w] = L[r];
             ++w;
-            tinyKept = tinyHere;
-            tinyHere = tinyNext;
             continue;
           }
           removed = true;
@@ -451,11 +465,13 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
           // Prefer the neighbour with the coarser scale: merging into the same-scale one would only
           // leave a sliver as thin as before beside the coarse one. Between equal scales, prefer
           // the one that needs no second propagation (a pending one for a pending sliver).
-          const bool prevTouches = w > 0 && L[w - 1].b1 >= t.b0 - tiny;
-          const bool nextTouches = r + 1 < m && L[r + 1].b0 <= t.b1 + tiny;
+          const bool prevTouches = w > 0 && prevTakes;
+          const bool nextTouches = r + 1 < m && nextTakes;
           bool intoNext = nextTouches && !prevTouches;
           if (nextTouches && prevTouches) {
-            intoNext = tinyNext > tinyKept || (tinyNext == tinyKept && t.pending() &&
+            const double tinyPrev = tinyLength(L[w - 1], edgeLength);
+            const double tinyNext = tinyLength(L[r + 1], edgeLength);
+            intoNext = tinyNext > tinyPrev || (tinyNext == tinyPrev && t.pending() &&
                                                L[r + 1].pending() && !L[w - 1].pending());
           }
           if (intoNext || prevTouches) {
@@ -467,7 +483,6 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
             }
             if (t.pending() && !into.pending()) grewUnpropagated(into);
           }
-          tinyHere = tinyNext;  // L[w − 1] and its ε stay the last kept
         }
         m = w;
       }
@@ -483,14 +498,14 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
           ++report.degeneracies[DegeneracyKind::D3];
           if (!front.pending()) grewUnpropagated(front);
           setRange(front, 0.0, front.b1);
-          sewn = true;
+          again = true;
         }
         Interval& back = L[m - 1];
         if (atBack && back.b1 < edgeLength && edgeLength - back.b1 < sewLength(back, edgeLength)) {
           ++report.degeneracies[DegeneracyKind::D3];
           if (!back.pending()) grewUnpropagated(back);
           setRange(back, back.b0, edgeLength);
-          sewn = true;
+          again = true;
         }
         for (std::size_t k = 0; k + 1 < m; ++k) {
           Interval& p = L[k];
@@ -503,7 +518,7 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
             // wider shadows are closed when the wavefront has passed: tol::kShadowSewRel.)
             if (gap >= std::max(sewLength(p, edgeLength), sewLength(q, edgeLength))) continue;
             ++report.degeneracies[DegeneracyKind::D3];
-            sewn = true;
+            again = true;
             if (p.pending() && !q.pending()) {
               setRange(p, p.b0, q.b0);
             } else if (q.pending() && !p.pending()) {
@@ -518,24 +533,25 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
           } else {
             if (gap <= -tiny) continue;
             ++report.degeneracies[DegeneracyKind::D2];
-            sewn = true;
+            again = true;
             const double meet = overlapMeetingPoint(p, q, q.b0, p.b1, edgeLength);
             setRange(p, p.b0, meet);
             setRange(q, meet, q.b1);
           }
         }
       }
-    }
 
-    // --- Step 5: merge neighbours with the same pseudo-source (and the same propagation state:
-    //     merging a propagated interval into a pending one would propagate it a second time).
-    {
+      // --- Step 5: merge neighbours with the same pseudo-source (and the same propagation
+      //     state: merging a propagated interval into a pending one would propagate it a second
+      //     time). The merged interval keeps the first one's function: only where the second's
+      //     was not the very same can steps 3 and 4 find something new.
       std::size_t w = 0;
       for (std::size_t r = 0; r < m; ++r) {
         if (w > 0 && L[w - 1].b1 == L[r].b0 && L[w - 1].pending() == L[r].pending() &&
             sameSource(L[w - 1], L[r], edgeLength)) {
           setRange(L[w - 1], L[w - 1].b0, L[r].b1);
           L[w - 1].flags |= static_cast<std::uint8_t>(L[r].flags & kFromIncoming);
+          if (L[w - 1].source != L[r].source || L[w - 1].sigma != L[r].sigma) again = true;
           continue;
         }
         if (w != r) L[w] = L[r];

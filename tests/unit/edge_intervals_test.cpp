@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include "geodex/tolerance.h"
@@ -75,6 +76,114 @@ TEST(Algorithm2, FirstIntervalIsKeptWhole) {
   EXPECT_EQ(e.list.intervals()[0].b1, 7.0);
   EXPECT_TRUE(e.report.incomingSurvived);
   ASSERT_EQ(e.toQueue().size(), 1u);
+}
+
+// Edge 16-25 of corpus/fuzz_solver/regress/vertex-agreement-d1-sliver-of-a-far-source-dropped-
+// on-an-empty-edge, in mesh units: a 0.125-long edge, a source 0.75 away. Its window for the first
+// 5e-12 (shorter than its ε, 7.5e-12) reaches the empty edge first, then the rest of its window,
+// then the window of the far vertex along the edge, 0.885 at x = 0. The source's 0.75 must stay.
+TEST(Algorithm2, ASliverOfAFarSourceAloneOnItsEdgeIsKeptUntilItsNeighbourArrives) {
+  constexpr double L = 0.125;
+  EdgeIntervals list;
+  EdgeUpdateReport report;
+  std::vector<Interval> scratch;
+  const Vec2 source(-2.5e-11, 0.75);
+  list.insert(make(0.0, 5e-12, source, 0.0), L, report, scratch);
+  ASSERT_EQ(list.intervals().size(), 1u) << "the sliver was dropped with no neighbour to take it";
+  list.insert(make(5e-12, L, source, 0.0), L, report, scratch);
+  const Interval alongTheEdge = make(0.0, L, Vec2(L, 0.0), 0.76034531631604729);
+  list.insert(alongTheEdge, L, report, scratch);
+  const double direct = make(0.0, L, source, 0.0).distanceAt(0.0);
+  ASSERT_LT(direct, alongTheEdge.distanceAt(0.0) - 0.1);
+  EXPECT_NEAR(list.distanceAt(0.0), direct, 1e-12);
+  EXPECT_NEAR(list.distanceAt(2.5e-12), make(0.0, L, source, 0.0).distanceAt(2.5e-12), 1e-12);
+}
+
+// Edge 3-13 of corpus/fuzz_solver/regress/vertex-agreement-d1-pieces-of-a-source-near-a-corner-
+// merged-into-a-far-g1-window, in mesh units: vertex 3's window along the edge (0.364 at x = 0),
+// then a face source's windows in four pieces, two of them shorter than the source's ε (4.4e-12)
+// and alone inside the G1 window, which is 0.13 longer there. Each such piece was merged into the
+// G1 window beside it, and the edge's end kept 0.6296 where the source gives 0.49999999998.
+TEST(Algorithm2, PiecesOfASourceShorterThanItsEpsilonAreNotMergedIntoAFarLongerNeighbour) {
+  constexpr double L = 0.2651650429449553;
+  EdgeIntervals list;
+  EdgeUpdateReport report;
+  std::vector<Interval> scratch;
+  const Vec2 source(-0.088388347631524658, 0.35355339059327379);
+  list.insert(make(0.0, L, Vec2(0.0, 0.0), 0.36443449342375822), L, report, scratch);
+  for (const auto& [b0, b1] : {std::pair{0.0, 0.26516504293487908},
+                               std::pair{0.26516504293935739, 0.26516504294255616},
+                               std::pair{0.0, 0.26516504293935739}, std::pair{0.26516504294255622, L}})
+    list.insert(make(b0, b1, source, 0.0), L, report, scratch);
+  const Interval direct = make(0.0, L, source, 0.0);
+  for (const double x : {0.26516504293935739, 0.2651650429410, 0.26516504294255622, L})
+    EXPECT_NEAR(list.distanceAt(x), direct.distanceAt(x), 1e-12) << "at x = " << x;
+}
+
+// corpus/fuzz_edge_update/regress/no-tiny-interval-step-3-threshold-blind-to-a-far-neighbour-
+// outside-the-slice: a sliver kept because no neighbour may take it, 1e-8 before a window from
+// 147456 away, whose ray-end precision (1.5e-9) makes the sliver tiny. A new window that ends
+// where the sliver starts, and is shorter there, may take it; the update's slice holds the sliver
+// but not the far window, and step 3 measured the sliver by its own ε (1e-11) only.
+TEST(Algorithm2, ASliverTinyByAFarNeighbourOutsideTheSliceIsTakenByTheNewWindow) {
+  constexpr double L = 1.0;
+  EdgeIntervals list;
+  EdgeUpdateReport report;
+  std::vector<Interval> scratch;
+  const Interval far = make(0.0625 + 1e-8, L, Vec2(-147456.0, 1e-9), 0.0);
+  const Interval sliver = make(0.0625, 0.0625 + 2.4e-11, Vec2(0.0, 1e-9), 2.0);
+  list.insert(far, L, report, scratch);
+  list.insert(sliver, L, report, scratch);
+  ASSERT_EQ(list.intervals().size(), 2u) << "no neighbour may take the sliver: it stays";
+  ASSERT_LT(sliver.length(), tinyLengthInList(list.intervals(), 0, L));
+  list.insert(make(0.0, 0.0625, Vec2(0.0, 0.0), 0.0), L, report, scratch);
+  ASSERT_EQ(list.intervals().size(), 2u);
+  EXPECT_EQ(list.intervals()[0].b1, sliver.b1) << "the new window grew over the sliver";
+  EXPECT_EQ(list.intervals()[1].b0, far.b0);
+}
+
+// corpus/fuzz_solver/regress/full-coverage-ties-of-collinear-pseudo-sources-kept-in-arrival-
+// order: a source s and a saddle p on one line from it, which crosses the edge at x = 0.5. p's
+// window (σ = |p − s|) is never shorter than s's and ties with it within rounding for ~1e-7
+// around 0.5; s's window ends there (p's shadow). Either way round, s must keep the tie and the
+// two meet at 0.5 itself: a breakpoint left 1e-7 off the line makes their windows on the next
+// edge, cast from s and from p, leave a gap.
+TEST(Algorithm2, ATieBetweenASourceAndASaddleOnItsLineGoesToTheSourceInEitherOrder) {
+  const Vec2 s(0.1, 0.8), p(0.3, 0.4);  // the line s → p reaches y = 0 at x = 0.5
+  const Interval direct = make(0.0, 0.5, s, 0.0);
+  const Interval saddle = make(0.3, kL, p, (p - s).norm());
+  for (const bool saddleFirst : {true, false}) {
+    Edge1 e;
+    e.insert(saddleFirst ? saddle : direct);
+    e.insert(saddleFirst ? direct : saddle);
+    expectWellFormed(e.list);
+    ASSERT_EQ(e.list.intervals().size(), 2u) << (saddleFirst ? "saddle first" : "source first");
+    EXPECT_EQ(e.list.intervals()[0].source, s);
+    EXPECT_NEAR(e.list.intervals()[0].b1, 0.5, 1e-12) << (saddleFirst ? "saddle first" : "source first");
+  }
+}
+
+// corpus/fuzz_edge_update/regress/no-tiny-interval-step-5-merge-makes-a-sliver-takeable-after-
+// step-3: two windows of near-equal sources (σ 4e-11 and 5e-11) side by side, then a 9e-11 gap
+// and a 9e-11 sliver of a third near-equal one; a window from 49888 away, long everywhere, fills
+// the gap and makes the sliver tiny (its ray-end precision, 5e-10). In step 3 the second window
+// grew over the gap but could not take the sliver (longer by just over the slack there); step 5
+// then merged it into the first, whose σ is 1e-11 smaller and which may take it. It was left.
+TEST(Algorithm2, ASliverANeighbourMayTakeOnlyAfterStep5MergedItIsTaken) {
+  constexpr double L = 1.9999999997875;
+  const Interval sliver = make(1.8557205201895313, 1.8557205202795313,
+                               Vec2(0.10937499999000001, 3.998054501964531), 4.9999999994687499e-11);
+  EdgeIntervals list;
+  list.assign({make(0.0, 1.8554763794345313, Vec2(0.10937500008000001, 3.9980545020545311),
+                    3.9999999995749995e-11),
+               make(1.8554763794345313, 1.8557205200995313,
+                    Vec2(0.10937500007875001, 3.9980545020545311), 4.9999999994687499e-11),
+               sliver, make(1.9357986433595313, L, Vec2(0.0, 3.9980545052145313), 0.0)});
+  EdgeUpdateReport report;
+  std::vector<Interval> scratch;
+  list.insert(make(0.0, L, Vec2(49888.0, 1.2874999998632031e-10), 0.0), L, report, scratch);
+  for (const Interval& w : list.intervals())
+    EXPECT_FALSE(w.b0 == sliver.b0 && w.b1 == sliver.b1) << "the sliver is still there";
 }
 
 TEST(Algorithm2, BetterEverywhereReplacesOld) {
@@ -152,9 +261,10 @@ TEST(Algorithm2, D1TinyIntervalIsMergedIntoItsNeighbour) {
   Edge1 e;
   e.insert(make(0.0, 5.0, Vec2(2.0, 1.0), 0.0));
   e.insert(make(5.0, kL, Vec2(8.0, 1.0), 0.0));
-  // A new interval better only on a sliver far below ε.
+  // A new interval on a sliver far below ε, shorter there only by rounding: the right
+  // neighbour's source a hair nearer the edge.
   const double tiny = 0.1 * tol::kTinyIntervalRel * kL;
-  e.insert(make(5.0, 5.0 + tiny, Vec2(5.0, 1e-3), 0.0));
+  e.insert(make(5.0, 5.0 + tiny, Vec2(8.0, 1.0 - 1e-13), 0.0));
   EXPECT_EQ(e.report.degeneracies[DegeneracyKind::D1], 1u);
   expectWellFormed(e.list);
   for (const Interval& w : e.list.intervals()) EXPECT_GE(w.length(), tol::kTinyIntervalRel * kL);
@@ -420,7 +530,7 @@ TEST(Algorithm2, TinyPendingSliverMergedIntoAPropagatedNeighbourMakesItPendingAg
   a.markPropagated();
   e.insert(a);
   const double tiny = 0.1 * tol::kTinyIntervalRel * kL;
-  e.insert(make(5.0, 5.0 + tiny, Vec2(5.0, 1.0), 0.0));
+  e.insert(make(5.0, 5.0 + tiny, Vec2(5.0, std::sqrt(10.0)), 0.0));  // as long as a at x = 5
   EXPECT_EQ(e.report.degeneracies[DegeneracyKind::D1], 1u);
   ASSERT_EQ(e.list.intervals().size(), 1u);
   EXPECT_EQ(e.list.intervals()[0].b1, 5.0 + tiny);

@@ -48,9 +48,18 @@ TEST(InvariantChecker, UnsewnTinyGapFails) {
   EXPECT_EQ(brokenInvariant({make(0, 5, Vec2(2, 1)), make(5 + gap, kL, Vec2(7, 1))}), "no-tiny-gap");
 }
 TEST(InvariantChecker, TinyIntervalFails) {
+  // A sliver as long as its left neighbour where they meet (√10 at x = 5): it could have
+  // merged into it.
+  const double tiny = 0.1 * tol::kTinyIntervalRel * kL;
+  EXPECT_EQ(brokenInvariant({make(0, 5, Vec2(2, 1)), make(5, 5 + tiny, Vec2(5, std::sqrt(10.0))),
+                             make(5 + tiny, kL, Vec2(7, 1))}),
+            "no-tiny-interval");
+}
+TEST(InvariantChecker, ASliverFarShorterThanBothNeighboursIsNoTinyInterval) {
+  // 1 at x = 5 against √10 and √5: neither neighbour may grow over it (canTakeSliver).
   const double tiny = 0.1 * tol::kTinyIntervalRel * kL;
   EXPECT_EQ(brokenInvariant({make(0, 5, Vec2(2, 1)), make(5, 5 + tiny, Vec2(5, 1)), make(5 + tiny, kL, Vec2(7, 1))}),
-            "no-tiny-interval");
+            "");
 }
 TEST(InvariantChecker, NegativeSigmaFails) {
   EXPECT_EQ(brokenInvariant({make(0, kL, Vec2(2, 1), -1.0)}), "finite-non-negative");

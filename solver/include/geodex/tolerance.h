@@ -109,7 +109,8 @@ inline constexpr double kEq1RootRel = kContinuityRel - 2.0 * kSameSourceRel;
 /// without a second propagation, and the sub-ε gap it leaves further on is step 4's.
 inline constexpr int kMaxRegrowths = 4;
 
-/// A new interval replaces an old one only where it is shorter by more than this × the distance.
+/// A new interval replaces an old one only where it is shorter by more than this × the distance
+/// (or within it, with a σ smaller by more than that: incomingBeats in edge_intervals.cpp).
 /// Without it, the same geodesic reached along two unfoldings (equal up to rounding) would keep
 /// replacing itself, fragmenting edges and re-propagating for nothing. Losing at most this much
 /// per decision keeps results within 1e-12 relative even along long chains of ties.
