@@ -68,8 +68,7 @@ void GeodesicSolver::solve(std::span<const SurfacePoint> sources, const SolveOpt
   SolveOptions inMeshUnits;
   // A stop beyond the largest double in mesh units stops nothing (tested first: no overflow trap).
   const MeshUnit& unit = mesh_.meshUnit();
-  inMeshUnits.stopDistance = inFileUnitsRange(options.stopDistance, {-unit.exponent, unit.inverse, unit.unit}) ==
-                                     ScaledRange::Overflow
+  inMeshUnits.stopDistance = inMeshUnitsRange(options.stopDistance, unit) == ScaledRange::Overflow
                                  ? kInfinity
                                  : options.stopDistance * unit.inverse;
   std::vector<ResolvedPoint> resolvedSources, targets;

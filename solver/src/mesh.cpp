@@ -324,6 +324,10 @@ ScaledRange inFileUnitsRange(double x, const MeshUnit& unit) {
   return ScaledRange::Normal;
 }
 
+ScaledRange inMeshUnitsRange(double x, const MeshUnit& unit) {
+  return inFileUnitsRange(x, {-unit.exponent, unit.inverse, unit.unit});
+}
+
 EdgeLengthProblem edgeLengthProblem(double lengthInMeshUnits, const MeshUnit& unit) {
   if (!(lengthInMeshUnits >= tol::kMinEdgeLengthRel)) return EdgeLengthProblem::Spread;
   switch (inFileUnitsRange(lengthInMeshUnits, unit)) {

@@ -1279,9 +1279,8 @@ std::optional<PropagationCase> inMeshUnits(const PropagationCase& c, MeshUnit& u
   for (const Vec3& p : c.face) largest = std::max(largest, p.cwiseAbs().maxCoeff());
   unit = meshUnitOf(largest);
   // (Tested by exponent before multiplying: debug test runs trap an overflow.)
-  const MeshUnit toMeshUnits{-unit.exponent, unit.inverse, unit.unit};
   for (double x : {c.window.b0, c.window.b1, c.window.source.x(), c.window.source.y(), c.window.sigma})
-    if (!std::isfinite(x) || inFileUnitsRange(x, toMeshUnits) == ScaledRange::Overflow) return std::nullopt;
+    if (!std::isfinite(x) || inMeshUnitsRange(x, unit) == ScaledRange::Overflow) return std::nullopt;
   PropagationCase m = c;
   for (Vec3& p : m.face) p *= unit.inverse;
   m.window.b0 *= unit.inverse;

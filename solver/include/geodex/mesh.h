@@ -50,6 +50,8 @@ MeshUnit meshUnitOf(double largestCoordinate);
 /// overflow), and exact: multiplying by 2^exponent only moves the exponent.
 enum class ScaledRange { Normal, Subnormal, Overflow };
 ScaledRange inFileUnitsRange(double x, const MeshUnit& unit);
+/// The same for x in the file's units on its way into mesh units (times 2^-exponent).
+ScaledRange inMeshUnitsRange(double x, const MeshUnit& unit);
 
 /// Why an edge cannot be computed with, given its length in mesh units (or None).
 enum class EdgeLengthProblem {
