@@ -442,13 +442,17 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
           // distance to the precision its source allows, and step 4 sews it to both ends.
           // Removing it too left the edge uncovered (corpus/fuzz_two_faces/regress/
           // full-coverage-edge-shorter-than-epsilon-lost-its-last-interval).
+          const bool belowTiny = L[r].length() < tiny;
           const bool lastOnShortEdge =
-              edgeLength < tiny &&
+              belowTiny && edgeLength < tiny &&
               (prev == nullptr || prev->b1 < L[r].b0 - tinyLength(*prev, edgeLength)) &&
               (next == nullptr || next->b0 > L[r].b1 + tinyLength(*next, edgeLength));
-          const bool prevTakes = prev != nullptr && canTakeSliver(*prev, L[r], edgeLength);
-          const bool nextTakes = next != nullptr && canTakeSliver(*next, L[r], edgeLength);
-          if (L[r].length() >= tiny || lastOnShortEdge || !(prevTakes || nextTakes)) {
+          // Only a sliver asks its neighbours (two square roots each, for most intervals of a
+          // solve otherwise).
+          const bool sliver = belowTiny && !lastOnShortEdge;
+          const bool prevTakes = sliver && prev != nullptr && canTakeSliver(*prev, L[r], edgeLength);
+          const bool nextTakes = sliver && next != nullptr && canTakeSliver(*next, L[r], edgeLength);
+          if (!(prevTakes || nextTakes)) {
             if (w != r) L[w] = L[r];
             ++w;
             continue;
