@@ -34,6 +34,19 @@ TEST(CheckOracles, PlanarFailsOnAPerturbedField) {
   EXPECT_EQ(planarOracle(s.mesh, s.sources, bad).failed, 1u);
 }
 
+// A vertex no face uses may lie outside the flat domain (found by a fuzz_solver finding replayed
+// with `geodex check`: the visibility oracle refused the query and the check ended in an
+// internal error). Its distance is +inf and the oracle compares the others.
+TEST(CheckOracles, PlanarIgnoresAnUnreferencedVertexOutsideTheDomain) {
+  TriangleSoup soup = lShapeMesh(8, 1.0);
+  soup.positions.push_back(Vec3(5.0, 5.0, 0.0));
+  Solved s(soup, {SurfacePoint::atVertex(0)});
+  ASSERT_TRUE(std::isinf(s.d.back()));
+  const OracleResult r = planarOracle(s.mesh, s.sources, s.d);
+  EXPECT_EQ(r.checked, s.d.size() - 1);  // (two infinities are not compared)
+  EXPECT_EQ(r.failed, 0u);
+}
+
 TEST(CheckOracles, MetamorphicFailsOnAPerturbedField) {
   Solved s(icosphereMesh(1, 1.0), {SurfacePoint::inFace(3, 0.2, 0.3, 0.5)});
   EXPECT_EQ(metamorphicOracle(s.mesh, s.sources, s.d).failed, 0u);
@@ -44,6 +57,19 @@ TEST(CheckOracles, MetamorphicFailsOnAPerturbedField) {
 
 // The powers-of-two scalings are compared bit for bit: one ulp at one vertex, far below every
 // other comparison's tolerance, fails each of them and nothing else.
+// The 1-to-3 refinement leaves a zero-area face whole: the centroid of (0,0), (2,0), (1,0) is
+// its corner (1,0), and the refined mesh had a zero-length edge the solver refuses.
+TEST(CheckOracles, MetamorphicRefinementKeepsAZeroAreaFaceWhole) {
+  TriangleSoup soup;
+  soup.positions = {Vec3(0, 0, 0), Vec3(2, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0)};
+  soup.faces = {{0, 2, 3}, {2, 1, 3}, {0, 1, 2}};
+  Solved s(soup, {SurfacePoint::atVertex(3)});
+  OracleResult r;
+  ASSERT_NO_THROW(r = metamorphicOracle(s.mesh, s.sources, s.d));
+  EXPECT_GT(r.checked, 0u);
+  EXPECT_EQ(r.failed, 0u) << r.firstFailure;
+}
+
 TEST(CheckOracles, MetamorphicScalingByPowersOfTwoIsBitForBit) {
   Solved s(icosphereMesh(1, 1.0), {SurfacePoint::atVertex(0)});
   const OracleResult good = metamorphicOracle(s.mesh, s.sources, s.d);

@@ -175,7 +175,10 @@ void metamorphicInto(OracleResult& r, const Mesh& mesh, const std::vector<Surfac
     for (std::size_t v = 0; v < n; ++v) back[v] = other[map(static_cast<Index>(v))];
     compareFields(r, "relabelling and face reordering", d, back, 1.0, diag);
   }
-  // Coplanar refinement: every face not holding a source split 1→3 at its centroid.
+  // Coplanar refinement: every face not holding a source split 1→3 at its centroid. A face of
+  // zero area stays whole: its centroid lies on its line, at one of its corners when two of them
+  // are mirror images about the third, and the refined mesh then had a zero-length edge, which
+  // the solver refuses (and `geodex check` reported as an error in the user's mesh).
   {
     TriangleSoup refined = soup;
     refined.faces.clear();
@@ -185,13 +188,14 @@ void metamorphicInto(OracleResult& r, const Mesh& mesh, const std::vector<Surfac
     std::vector<Index> newFaceOf(soup.faces.size(), kNoIndex);
     for (Index f = 0; f < soup.faces.size(); ++f) {
       const auto t = soup.faces[f];
-      if (keep[f]) {
+      const Vec3 &p0 = soup.positions[t[0]], &p1 = soup.positions[t[1]], &p2 = soup.positions[t[2]];
+      if (keep[f] || (p1 - p0).cross(p2 - p0) == Vec3::Zero()) {
         newFaceOf[f] = static_cast<Index>(refined.faces.size());
         refined.faces.push_back(t);
         continue;
       }
       const Index c = static_cast<Index>(refined.positions.size());
-      refined.positions.push_back((soup.positions[t[0]] + soup.positions[t[1]] + soup.positions[t[2]]) / 3.0);
+      refined.positions.push_back((p0 + p1 + p2) / 3.0);
       refined.faces.push_back({t[0], t[1], c});
       refined.faces.push_back({t[1], t[2], c});
       refined.faces.push_back({t[2], t[0], c});
@@ -265,15 +269,23 @@ void planarInto(OracleResult& r, const Mesh& mesh, const std::vector<SurfacePoin
   } catch (const std::exception&) {
     return;  // a pinched boundary: the visibility-graph oracle does not apply
   }
-  const std::vector<Vec2> queries = planarPositions(flat);
+  // Only the vertices of faces are queried: an unreferenced one may lie outside the domain (its
+  // distance is +inf anyway), and the oracle refuses such a query.
+  const std::vector<Vec2> positions = planarPositions(flat);
+  std::vector<Index> referenced;
+  std::vector<Vec2> queries;
+  for (std::size_t v = 0; v < positions.size(); ++v) {
+    if (!mesh.isReferenced(static_cast<Index>(v))) continue;
+    referenced.push_back(static_cast<Index>(v));
+    queries.push_back(positions[v]);
+  }
   std::vector<double> exact(d.size(), INFINITY);
   for (const SurfacePoint& s : sources) {
     const Vec3 p = surfacePointPosition(flat, s);
     const auto one = planarDomainDistances(boundary, Vec2(p.x(), p.y()), queries);
-    for (std::size_t v = 0; v < exact.size(); ++v) exact[v] = std::min(exact[v], one[v]);
+    for (std::size_t k = 0; k < referenced.size(); ++k)
+      exact[referenced[k]] = std::min(exact[referenced[k]], one[k]);
   }
-  for (std::size_t v = 0; v < d.size(); ++v)
-    if (!mesh.isReferenced(static_cast<Index>(v))) exact[v] = INFINITY;
   compareFields(r, "planar shortest path", exact, d, 1.0, diag);
 }
 
