@@ -119,40 +119,15 @@ bool farFromUnitSize(const LocalWindow& w) {
 
 }  // namespace
 
-LocalPropagation propagateLocal(const LocalWindow& w) {
+namespace {
+
+// Cases (1b)–(6) of the tree: s clear of e0's line, or a hair below it outside the window.
+LocalPropagation throughWedge(const LocalWindow& w, double scale) {
   using pred::Side;
-  // A face far from unit size is decided at unit scale (atUnitScale), so that the collinearity
-  // tests' products of four lengths (sideOfRay) neither under- nor overflow: a face at 1e-106
-  // decided G2 where the exact tree says G3 (corpus/fuzz_propagation/regress/exact-predicates-
-  // face-at-1e-106-fourth-powers-underflow). Inside the band the configuration is used as it is:
-  // scaling by a power of two commutes with every operation here (the square roots are of squares) while no product
-  // leaves the normal range, so either way gives the same bits unless a value is 2^100 times
-  // smaller than the face — far below anything the solver keeps (D1). atUnitScale lands in the
-  // band, so this recurses once at most.
-#ifndef GEODEX_NO_MESH_UNITS  // (defined in a bench-only build: solver/CMakeLists.txt)
-  if (farFromUnitSize(w)) [[unlikely]] return propagateLocal(atUnitScale(w));
-#endif
   const Vec2 v0(0.0, 0.0), v2(w.edgeLength, 0.0), v1 = w.apex, s = w.source;
   const Vec2 b0(w.b0, 0.0), b1(w.b1, 0.0);
-  const double scale = localScale(w);
   const double coincide = tol::kCoincideRel * scale;
   const double tiny = tol::kTinyIntervalRel * scale;
-
-  if (v1.y() <= tol::kFlatFaceRel * scale) return passThroughZeroAreaFace(w);
-
-  // (1) G1: s on the line of e0. Within the window (s = b0, s = b1, or between after a merge)
-  //     every point of the face is seen straight from s: e1 and e2 whole. Outside it, the
-  //     window's rays run along e0 and none enters the face.
-  if (std::abs(s.y()) <= coincide) {
-    if (s.x() >= w.b0 - coincide && s.x() <= w.b1 + coincide) {
-      LocalPropagation r{Fig6Branch::G1Inside};
-      addChild(r, 1, 0.0, 1.0);
-      addChild(r, 2, 0.0, 1.0);
-      return r;
-    }
-    return {Fig6Branch::G1Outside};
-  }
-
   const bool b0IsV0 = w.b0 <= coincide;
   const bool b1IsV2 = w.edgeLength - w.b1 <= coincide;
   // Where the boundary rays leave through e1 and e2. A ray through a corner of the face leaves
@@ -233,6 +208,56 @@ LocalPropagation propagateLocal(const LocalWindow& w) {
   addChild(r, 1, b0OnE1(), 1.0);
   addChild(r, 2, 0.0, b1OnE2());
   return r;
+}
+
+}  // namespace
+
+LocalPropagation propagateLocal(const LocalWindow& w) {
+  // A face far from unit size is decided at unit scale (atUnitScale), so that the collinearity
+  // tests' products of four lengths (sideOfRay) neither under- nor overflow: a face at 1e-106
+  // decided G2 where the exact tree says G3 (corpus/fuzz_propagation/regress/exact-predicates-
+  // face-at-1e-106-fourth-powers-underflow). Inside the band the configuration is used as it is:
+  // scaling by a power of two commutes with every operation here (the square roots are of squares) while no product
+  // leaves the normal range, so either way gives the same bits unless a value is 2^100 times
+  // smaller than the face — far below anything the solver keeps (D1). atUnitScale lands in the
+  // band, so this recurses once at most.
+#ifndef GEODEX_NO_MESH_UNITS  // (defined in a bench-only build: solver/CMakeLists.txt)
+  if (farFromUnitSize(w)) [[unlikely]] return propagateLocal(atUnitScale(w));
+#endif
+  const Vec2 s = w.source;
+  const double scale = localScale(w);
+  const double coincide = tol::kCoincideRel * scale;
+
+  if (w.apex.y() <= tol::kFlatFaceRel * scale) return passThroughZeroAreaFace(w);
+
+  // (1) G1: s on the line of e0. Within the window (s = b0, s = b1, or between after a merge)
+  //     every point of the face is seen straight from s: e1 and e2 whole.
+  if (std::abs(s.y()) <= coincide) {
+    if (s.x() >= w.b0 - coincide && s.x() <= w.b1 + coincide) {
+      LocalPropagation r{Fig6Branch::G1Inside};
+      addChild(r, 1, 0.0, 1.0);
+      addChild(r, 2, 0.0, 1.0);
+      return r;
+    }
+    // Outside it, exactly on the line, the rays run along e0 and none enters the face. A hair
+    // below it they enter at a grazing angle, and beyond a flat vertex on the line nothing else
+    // reaches the sliver they cross: the window of a source 1.4e-12 off the line of a grid edge
+    // through a flat vertex propagated nothing, and the edge beyond kept a 5.6e-12 stretch
+    // 0.029 too long at its end (corpus/fuzz_solver/regress/vertex-agreement-g1-outside-
+    // grazing-rays-dropped-beyond-a-flat-vertex). The wedge's own branches give those children
+    // when they find it clearly below the apex, leaving through the edge ahead (e2 travelling
+    // towards v2, e1 towards v0). Any other verdict is the tree's collinearity tests failing on
+    // rays along e0: in a needle face they handed both edges whole to a source whose rays
+    // reach neither (corpus/fuzz_predicates/regress/soundness-g1-outside-rays-along-a-needle-
+    // given-both-edges-whole).
+    if (s.y() == 0.0) return {Fig6Branch::G1Outside};
+    LocalPropagation r = throughWedge(w, scale);
+    const bool towardsV2 = s.x() < w.b0;
+    if (r.branch != (towardsV2 ? Fig6Branch::LeftOfWedge : Fig6Branch::RightOfWedge)) r.numChildren = 0;
+    r.branch = Fig6Branch::G1Outside;
+    return r;
+  }
+  return throughWedge(w, scale);
 }
 
 // ===  From a LocalChild to an Interval on the child edge =======================================

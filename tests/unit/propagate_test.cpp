@@ -63,6 +63,36 @@ TEST(Fig6, G1SourceOnEdgeLineOutsideWindowPropagatesNothing) {
   EXPECT_EQ(r.numChildren, 0);
 }
 
+// A hair below e0's line, behind v0: the rays enter the face at a grazing angle and leave
+// through e2 beside v2. The ray through b0 = v0, direction (1, 1e-12), meets e2 (points
+// (1+t, 1-t)) where x + y = 2: x = 2 / (1 + 1e-12), t = x − 1 ≈ 1 − 2e-12; the one through b1 = v2
+// leaves at v2 itself. (corpus/fuzz_solver/regress/vertex-agreement-g1-outside-grazing-rays-
+// dropped-beyond-a-flat-vertex: nothing else reached that sliver.)
+TEST(Fig6, G1SourceAHairOffTheLineBehindV0GivesTheSliverBesideV2) {
+  const auto r = propagateLocal(window(0.0, 2.0, Vec2(-1.0, -1e-12)));
+  EXPECT_EQ(r.branch, Fig6Branch::G1Outside);
+  ASSERT_EQ(r.numChildren, 1);
+  expectChild(r, 0, 2, 1.0 - 2e-12, 1.0);
+}
+
+// The mirror image: behind v2, the rays leave through e1 beside v0, up to t ≈ 2e-12.
+TEST(Fig6, G1SourceAHairOffTheLineBeyondV2GivesTheSliverBesideV0) {
+  const auto r = propagateLocal(window(0.0, 2.0, Vec2(3.0, -1e-12)));
+  EXPECT_EQ(r.branch, Fig6Branch::G1Outside);
+  ASSERT_EQ(r.numChildren, 1);
+  expectChild(r, 0, 1, 0.0, 2e-12);
+}
+
+// A needle whose apex (−14, 8e-11) sits beside e0's line, the source 1.6e-11 below it and beyond
+// the window [0, 2]: the rays run along e0 towards v0, within the collinearity tolerance of
+// every corner, and the wedge's branches have no clear verdict. Nothing is propagated, as
+// exactly on the line (they had handed e1 and e2 whole to it).
+TEST(Fig6, G1SourceAHairOffTheLineOfANeedleGivesNoWholeEdges) {
+  const auto r = propagateLocal(window(0.0, 2.0, Vec2(7.00000000024, -1.6e-11), Vec2(-14.0, 8e-11), 8.0));
+  EXPECT_EQ(r.branch, Fig6Branch::G1Outside);
+  EXPECT_EQ(r.numChildren, 0);
+}
+
 TEST(Fig6, G2LeftRayThroughApex) {
   // s = (0,-1), b0 = (0.5,0), v1 = (1,1) collinear. The right ray through (1.5,0) meets e2 at
   // (1.5u, -1+u) = (1+t, 1-t) → t = 0.8.

@@ -1190,9 +1190,11 @@ Verdict checkPredicates(const PredicateCase& c) {
   }
 
   // (c) coverage and soundness. Along e0 (G1) and through a zero-area face the rays graze the
-  // edges: the whole-edge children are the paper's contract there, nothing to sample.
+  // edges: the whole-edge children are the paper's contract there, nothing to sample. Outside
+  // the window (G1 outside) the rays run along e0, none or only a grazing sliver entering the
+  // face; where the tree gives that sliver it is judged as any wedge's children.
   if (r.branch == Fig6Branch::ZeroAreaFace || r.branch == Fig6Branch::G1Inside ||
-      r.branch == Fig6Branch::G1Outside)
+      (r.branch == Fig6Branch::G1Outside && r.numChildren == 0))
     return v;
   const Vec2 s = u.source, b0(u.b0, 0.0), b1(u.b1, 0.0);
   const double scale = localScale(u);
@@ -1431,9 +1433,10 @@ Verdict checkPropagation(const PropagationCase& input) {
   }
 
   // (b) Coverage by the children the solver keeps. Along e0 (G1) and through a zero-area face
-  // the whole-edge children are the contract, nothing to sample (as in fuzz_predicates).
+  // the whole-edge children are the contract, nothing to sample (as in fuzz_predicates); a
+  // grazing sliver given outside the window (G1 outside) is judged as any wedge's children.
   if (r.branch != Fig6Branch::ZeroAreaFace && r.branch != Fig6Branch::G1Inside &&
-      r.branch != Fig6Branch::G1Outside) {
+      !(r.branch == Fig6Branch::G1Outside && r.numChildren == 0)) {
     const Coverage coverage = wedgeCoverage(w, {made.data(), static_cast<std::size_t>(numMade)});
     if (!coverage.uncovered.empty()) return fail(v, "coverage", coverage.uncovered + where());
     if (coverage.imageBelowEpsilon) v.summary += " (image below epsilon)";

@@ -38,8 +38,8 @@ struct DegeneracyCounters {
   /// denominator of Table 1's degeneracy rate.
   std::uint64_t cases = 0;
   /// Mesh-level cases the paper leaves out: windows passed through a zero-area face, and
-  /// windows whose source lies on their own edge's line outside the window (nothing to
-  /// propagate: their rays run along the edge).
+  /// windows whose source lies on their own edge's line outside the window (their rays run
+  /// along the edge; only those a hair off it enter the face, at a grazing angle).
   std::uint64_t zeroAreaFaces = 0;
   std::uint64_t sourceOnEdgeLineOutside = 0;
   /// Children dropped because their source lies clearly outside the face across their edge

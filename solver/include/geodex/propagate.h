@@ -33,7 +33,7 @@ namespace geodex {
 enum class Fig6Branch : std::uint8_t {
   ZeroAreaFace,   ///< apex on the line of e0: the window passes straight through (not in the paper)
   G1Inside,       ///< (1) s on e0's line, within [b0, b1]
-  G1Outside,      ///< (1) s on e0's line, outside [b0, b1]: nothing to propagate
+  G1Outside,      ///< (1) s on e0's line, outside [b0, b1]: only rays a hair off it enter the face
   G2,             ///< (2) s, b0, v1 collinear, b0 ≠ v0
   G4,             ///< (2) s, b0 = v0, v1 collinear
   G3,             ///< (3) s, b1, v1 collinear, b1 ≠ v2
