@@ -124,11 +124,10 @@ std::string shadowViolation(const LocalWindow& w, const LocalPropagation& r) {
       return "";  // a pass-through along e0's line: no wedge to speak of (unit-tested by hand)
     case Fig6Branch::G1Outside:
       // s on e0's line outside the window: exactly on it, its rays run along e0 and none enters
-      // the face; a hair below it, a grazing sliver may, and where one is given it is checked
-      // as any wedge's children below.
+      // the face; a hair below it, the ones that enter are checked as any wedge's below (rays
+      // within the angular slack of the wedge's or the apex's angle may go either way).
       if (w.source.y() == 0.0)
         return r.numChildren == 0 ? "" : "G1-outside with s on the line made children: " + describe(r);
-      if (r.numChildren == 0) return "";
       break;
     case Fig6Branch::G1Inside: {
       // s on e0 within the window: the whole (convex) face is seen from s.
