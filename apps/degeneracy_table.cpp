@@ -46,7 +46,7 @@ void writeDegeneracyTable(std::ostream& out, const DegeneracyCounters& counters)
   std::snprintf(line, sizeof line, "%-4s %14llu\n", "all",
                 static_cast<unsigned long long>(counters.cases));
   out << line;
-  out << "degeneracy rate (G1–G5 over all cases): "
+  out << "Fig. 6 degeneracy rate (G1–G5 over all propagation cases, geodex's tolerances; not Table 1's: README, Degeneracies): "
       << percent(counters.geometricTotal(), counters.cases) << '\n';
   out << "mesh-level cases: " << counters.zeroAreaFaces << " windows through zero-area faces, "
       << counters.sourceOnEdgeLineOutside << " with the source on the edge's line outside, "

@@ -1,7 +1,8 @@
 #pragma once
-// The degeneracy table of a solve, in the manner of Liu, Zhou & Hu 2007, Table 1: how often each
-// enumerated case occurred, as a count and as a share of all propagation cases, and the
-// degeneracy rate (G1–G5 over all cases). Used by `geodex distance --stats` and the demo.
+// The degeneracy table of a solve, laid out as Liu, Zhou & Hu 2007, Table 1: how often each
+// enumerated case occurred, as a count and as a share of all propagation cases, and the Fig. 6
+// degeneracy rate (G1–G5 over all cases; not the paper's rate, see README "Degeneracies"). Used by
+// `geodex distance --stats` and the demo.
 
 #include <iosfwd>
 
@@ -10,7 +11,7 @@
 namespace geodex::cli {
 
 /// Writes the table, one row per kind G1..G5, D1..D4, then the rate line
-///   degeneracy rate (G1–G5 over all cases): X%
+///   Fig. 6 degeneracy rate (G1–G5 over all propagation cases, …): X%
 /// and the mesh-level cases the paper leaves out (zero-area faces, sources on an edge's line).
 void writeDegeneracyTable(std::ostream& out, const DegeneracyCounters& counters);
 

@@ -1,7 +1,7 @@
 #pragma once
 // The degenerate cases of Liu, Zhou & Hu 2007, named as in the paper and DESIGN.md, and the
-// counters the solver keeps of them (so the degeneracy rate of the paper's Table 1 can be
-// reported: geometric-intersection cases G1–G5 over all propagation cases).
+// counters the solver keeps of them: geometric-intersection cases G1–G5 over all propagation
+// cases is the Fig. 6 rate `--stats` reports (not the paper's Table 1 rate: README, Degeneracies).
 
 #include <array>
 #include <cstdint>
@@ -35,7 +35,7 @@ constexpr bool isGeometric(DegeneracyKind k) { return k <= DegeneracyKind::G5; }
 struct DegeneracyCounters {
   std::array<std::uint64_t, kNumDegeneracyKinds> count{};
   /// All propagation cases (one window propagated across one face), degenerate or not: the
-  /// denominator of Table 1's degeneracy rate.
+  /// denominator of the Fig. 6 degeneracy rate.
   std::uint64_t cases = 0;
   /// Mesh-level cases the paper leaves out: windows passed through a zero-area face, and
   /// windows whose source lies on their own edge's line outside the window (their rays run
