@@ -240,16 +240,14 @@ LocalPropagation propagateLocal(const LocalWindow& w) {
       return r;
     }
     // Outside it, exactly on the line, the rays run along e0 and none enters the face. A hair
-    // below it they enter at a grazing angle, and beyond a flat vertex on the line nothing else
-    // reaches the sliver they cross: the window of a source 1.4e-12 off the line of a grid edge
-    // through a flat vertex propagated nothing, and the edge beyond kept a 5.6e-12 stretch
-    // 0.029 too long at its end (corpus/fuzz_solver/regress/vertex-agreement-g1-outside-
-    // grazing-rays-dropped-beyond-a-flat-vertex). The wedge's own branches give those children
-    // when they find it clearly below the apex, leaving through the edge ahead (e2 travelling
-    // towards v2, e1 towards v0). Any other verdict is the tree's collinearity tests failing on
-    // rays along e0: in a needle face they handed both edges whole to a source whose rays
-    // reach neither (corpus/fuzz_predicates/regress/soundness-g1-outside-rays-along-a-needle-
-    // given-both-edges-whole).
+    // below it they enter at a grazing angle, and where a flat vertex on the line lets nothing
+    // else reach the sliver they cross, it is theirs alone (corpus/fuzz_solver/regress/vertex-
+    // agreement-g1-outside-grazing-rays-dropped-beyond-a-flat-vertex). The wedge's own branches
+    // give those children when they find the wedge clearly beside the apex, leaving through the
+    // edge ahead (e2 travelling towards v2, e1 towards v0). Any other verdict is the tree's
+    // collinearity tests failing on rays along e0, which in a needle face hand whole edges to a
+    // source whose rays reach neither (corpus/fuzz_predicates/regress/soundness-g1-outside-rays-
+    // along-a-needle-given-both-edges-whole).
     if (s.y() == 0.0) return {Fig6Branch::G1Outside};
     LocalPropagation r = throughWedge(w, scale);
     const bool towardsV2 = s.x() < w.b0;

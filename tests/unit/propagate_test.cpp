@@ -86,7 +86,7 @@ TEST(Fig6, G1SourceAHairOffTheLineBeyondV2GivesTheSliverBesideV0) {
 // A needle whose apex (−14, 8e-11) sits beside e0's line, the source 1.6e-11 below it and beyond
 // the window [0, 2]: the rays run along e0 towards v0, within the collinearity tolerance of
 // every corner, and the wedge's branches have no clear verdict. Nothing is propagated, as
-// exactly on the line (they had handed e1 and e2 whole to it).
+// exactly on the line: whole edges would claim points no ray of the window reaches.
 TEST(Fig6, G1SourceAHairOffTheLineOfANeedleGivesNoWholeEdges) {
   const auto r = propagateLocal(window(0.0, 2.0, Vec2(7.00000000024, -1.6e-11), Vec2(-14.0, 8e-11), 8.0));
   EXPECT_EQ(r.branch, Fig6Branch::G1Outside);
