@@ -34,9 +34,8 @@ TEST(CheckOracles, PlanarFailsOnAPerturbedField) {
   EXPECT_EQ(planarOracle(s.mesh, s.sources, bad).failed, 1u);
 }
 
-// A vertex no face uses may lie outside the flat domain (found by a fuzz_solver finding replayed
-// with `geodex check`: the visibility oracle refused the query and the check ended in an
-// internal error). Its distance is +inf and the oracle compares the others.
+// A vertex no face uses may lie outside the flat domain, where the visibility oracle refuses a
+// query. Its distance is +inf; the oracle compares the others.
 TEST(CheckOracles, PlanarIgnoresAnUnreferencedVertexOutsideTheDomain) {
   TriangleSoup soup = lShapeMesh(8, 1.0);
   soup.positions.push_back(Vec3(5.0, 5.0, 0.0));
@@ -55,10 +54,8 @@ TEST(CheckOracles, MetamorphicFailsOnAPerturbedField) {
   EXPECT_GT(metamorphicOracle(s.mesh, s.sources, bad).failed, 0u);
 }
 
-// The powers-of-two scalings are compared bit for bit: one ulp at one vertex, far below every
-// other comparison's tolerance, fails each of them and nothing else.
 // The 1-to-3 refinement leaves a zero-area face whole: the centroid of (0,0), (2,0), (1,0) is
-// its corner (1,0), and the refined mesh had a zero-length edge the solver refuses.
+// its corner (1,0), and splitting there would make a zero-length edge the solver refuses.
 TEST(CheckOracles, MetamorphicRefinementKeepsAZeroAreaFaceWhole) {
   TriangleSoup soup;
   soup.positions = {Vec3(0, 0, 0), Vec3(2, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0)};
@@ -70,6 +67,8 @@ TEST(CheckOracles, MetamorphicRefinementKeepsAZeroAreaFaceWhole) {
   EXPECT_EQ(r.failed, 0u) << r.firstFailure;
 }
 
+// The powers-of-two scalings are compared bit for bit: one ulp at one vertex, far below every
+// other comparison's tolerance, fails each of them and nothing else.
 TEST(CheckOracles, MetamorphicScalingByPowersOfTwoIsBitForBit) {
   Solved s(icosphereMesh(1, 1.0), {SurfacePoint::atVertex(0)});
   const OracleResult good = metamorphicOracle(s.mesh, s.sources, s.d);

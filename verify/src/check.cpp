@@ -177,8 +177,8 @@ void metamorphicInto(OracleResult& r, const Mesh& mesh, const std::vector<Surfac
   }
   // Coplanar refinement: every face not holding a source split 1→3 at its centroid. A face of
   // zero area stays whole: its centroid lies on its line, at one of its corners when two of them
-  // are mirror images about the third, and the refined mesh then had a zero-length edge, which
-  // the solver refuses (and `geodex check` reported as an error in the user's mesh).
+  // are mirror images about the third, and splitting there would make a zero-length edge, which
+  // the solver refuses (the check would blame the user's mesh).
   {
     TriangleSoup refined = soup;
     refined.faces.clear();
