@@ -346,6 +346,22 @@ case_scale_refusals() {
   [[ $(line "$OUT" 3) == 1.414213562373095e-300 ]] || fail "the diagonal of a 1e-300 square should be 1.414213562373095e-300"
 }
 
+# A flat grid with holes, zero-area faces and an unused vertex; the edge source lies 1e-11 (of its
+# edge) off the line of edge 13–23 through the flat vertex 13 (corpus/fuzz_solver/regress/vertex-
+# agreement-g1-outside-grazing-rays-dropped-beyond-a-flat-vertex). Every check passes: the
+# invariants (edge 14–23 used to give 0.029 too much at vertex 23), the planar oracle (it refused
+# the unused vertex outside the domain: exit 3) and the refinement (it split a zero-area face at
+# a corner: exit 2).
+case_check_grid_source_on_an_edge_line_through_a_flat_vertex() {
+  run check "$DATA/grid-with-holes-source-on-an-edge-line-through-a-flat-vertex.off" --level full \
+    --source e:3,12,0.50000000001 --source v:0
+  expect_rc 0
+  expect_out '^vertex-agreement +[0-9]+ +0 '
+  expect_out '^planar +[1-9][0-9]* +0 '
+  expect_out '^metamorphic +[1-9][0-9]* +0 '
+  expect_out '^check passed$'
+}
+
 ALL_CASES=$(declare -F | awk '{print $3}' | sed -n 's/^case_//p')
 
 if [[ $CASE == all ]]; then
