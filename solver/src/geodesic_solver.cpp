@@ -295,7 +295,9 @@ void GeodesicSolver::propagate(Index edge, const Interval& w) {
   const LocalWindow local{E.length, fr.apexPos, w.b0, w.b1, Vec2(w.source.x(), -w.source.y())};
   const LocalPropagation result = propagateLocal(local);
   ++counters_.cases;
-  if (const auto kind = degeneracyOf(result.branch)) ++counters_[*kind];
+  const std::uint64_t discontinuitiesBefore = counters_.discontinuityTotal();
+  const auto kind = degeneracyOf(result.branch);
+  if (kind) ++counters_[*kind];
   if (result.branch == Fig6Branch::ZeroAreaFace) ++counters_.zeroAreaFaces;
   if (result.branch == Fig6Branch::G1Outside) ++counters_.sourceOnEdgeLineOutside;
   if (hooked()) observer_->onPropagation({f, edge, w, local, result});
@@ -317,6 +319,7 @@ void GeodesicSolver::propagate(Index edge, const Interval& w) {
     if (CE.face[1 - n.side] == kNoIndex) n.markPropagated();
     addInterval(ce, n, &result.branch);
   }
+  if (kind || counters_.discontinuityTotal() != discontinuitiesBefore) ++counters_.degenerateCases;
 }
 
 // The interval a queue entry stands for, if the entry is still current: the pending interval

@@ -222,6 +222,52 @@ TEST(DegeneracyCounters, EveryCaseIsReachedByTheTestInputs) {
   EXPECT_GT(total.cases, total.geometricTotal());
 }
 
+// A case is degenerate when its Fig. 6 leaf is G1–G5 or when the edge updates of its children
+// repaired a D1–D4; an observer recounts that from the events and must agree with the solver.
+class DegenerateCaseRecount : public SolverObserver {
+ public:
+  void onPropagation(const PropagationEvent& e) override {
+    closeCase();
+    open_ = true;
+    degenerate_ = degeneracyOf(e.result.branch).has_value();
+  }
+  void onEdgeUpdate(const EdgeUpdateEvent& e) override {
+    if (e.branch == nullptr) {  // a source's or a pseudo-source's window: no propagation case
+      closeCase();
+      return;
+    }
+    DegeneracyCounters d;
+    d += e.report.degeneracies;
+    if (d.discontinuityTotal() > 0) degenerate_ = true;
+  }
+  void onFinish(const GeodesicSolver&) override { closeCase(); }
+  std::uint64_t degenerateCases = 0;
+
+ private:
+  void closeCase() {
+    if (open_ && degenerate_) ++degenerateCases;
+    open_ = false;
+  }
+  bool open_ = false, degenerate_ = false;
+};
+
+TEST(DegeneracyCounters, DegenerateCasesAreCasesWithAGLeafOrADRepairInTheirChildren) {
+  for (const TriangleSoup& soup : {verify::gridMesh(12, 12, 1.0, 1.0, DiagonalPattern::Alternating),
+                                   verify::quantizedHeightField(24, 24, 9, 3)}) {
+    const Mesh mesh(soup);
+    GeodesicSolver solver(mesh);
+    DegenerateCaseRecount recount;
+    solver.setObserver(&recount);
+    solver.solve(std::vector<SurfacePoint>{SurfacePoint::atVertex(5)});
+    const DegeneracyCounters& c = solver.counters();
+    EXPECT_EQ(c.degenerateCases, recount.degenerateCases);
+    // Both kinds occur on these meshes, so the count is more than either alone could give.
+    EXPECT_GT(c.degenerateCases, 0u);
+    EXPECT_LE(c.degenerateCases, c.cases);
+    EXPECT_GE(c.degenerateCases, c.geometricTotal());
+  }
+}
+
 // ===  API contract ================================================================================
 
 TEST(SolverApi, UnreachableIsInfinityNeverZero) {

@@ -79,6 +79,7 @@ void expectScaledBitForBit(const Answers& unit, const Answers& got, int k) {
       EXPECT_EQ(got.pathPoints[i][c], std::ldexp(unit.pathPoints[i][c], k)) << "2^" << k << " point " << i;
   EXPECT_EQ(got.counters.count, unit.counters.count) << "2^" << k;
   EXPECT_EQ(got.counters.cases, unit.counters.cases) << "2^" << k;
+  EXPECT_EQ(got.counters.degenerateCases, unit.counters.degenerateCases) << "2^" << k;
   EXPECT_EQ(got.counters.zeroAreaFaces, unit.counters.zeroAreaFaces) << "2^" << k;
   EXPECT_EQ(got.counters.childEdgesSeenFromOutside, unit.counters.childEdgesSeenFromOutside);
   EXPECT_EQ(got.stats.intervalsCreated, unit.stats.intervalsCreated) << "2^" << k;

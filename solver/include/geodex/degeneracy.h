@@ -37,6 +37,10 @@ struct DegeneracyCounters {
   /// All propagation cases (one window propagated across one face), degenerate or not: the
   /// denominator of the Fig. 6 degeneracy rate.
   std::uint64_t cases = 0;
+  /// Cases in which anything degenerate happened: a G1–G5 leaf of Fig. 6, or a D1–D4 repair in
+  /// the edge updates of the case's children. The paper's Sect. 5 rate ("degenerate cases over
+  /// all the cases") read this way is the closest we measure to its Table 1 (docs/paper.md).
+  std::uint64_t degenerateCases = 0;
   /// Mesh-level cases the paper leaves out: windows passed through a zero-area face, and
   /// windows whose source lies on their own edge's line outside the window (their rays run
   /// along the edge; only those a hair off it enter the face, at a grazing angle).
@@ -49,9 +53,11 @@ struct DegeneracyCounters {
   std::uint64_t& operator[](DegeneracyKind k) { return count[static_cast<std::size_t>(k)]; }
   std::uint64_t operator[](DegeneracyKind k) const { return count[static_cast<std::size_t>(k)]; }
   std::uint64_t geometricTotal() const { return count[0] + count[1] + count[2] + count[3] + count[4]; }
+  std::uint64_t discontinuityTotal() const { return count[5] + count[6] + count[7] + count[8]; }
   DegeneracyCounters& operator+=(const DegeneracyCounters& o) {
     for (std::size_t i = 0; i < kNumDegeneracyKinds; ++i) count[i] += o.count[i];
     cases += o.cases;
+    degenerateCases += o.degenerateCases;
     zeroAreaFaces += o.zeroAreaFaces;
     sourceOnEdgeLineOutside += o.sourceOnEdgeLineOutside;
     childEdgesSeenFromOutside += o.childEdgesSeenFromOutside;
