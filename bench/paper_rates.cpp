@@ -61,9 +61,9 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "usage: geodex_paper_rates MESH[:VERTEX] ...\n");
     return 2;
   }
-  std::printf("| mesh | faces | cases | G1–G5 (ours) | D1 | D2 | D3 | D4 | Fig. 6 rate | paper's rules, "
-              "ε = 2.2e-16 | window at an edge end | degenerate-case rate |\n");
-  std::printf("|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|\n");
+  std::printf("| mesh | faces | cases | G1 | G2 | G3 | G4 | G5 | D1 | D2 | D3 | D4 | Fig. 6 rate | "
+              "paper's rules, ε = 2.2e-16 | window at an edge end | degenerate-case rate |\n");
+  std::printf("|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|\n");
   for (int i = 1; i < argc; ++i) {
     std::string path = argv[i];
     geodex::Index source = 0;
@@ -81,11 +81,13 @@ int main(int argc, char** argv) {
       const geodex::DegeneracyCounters& c = solver.counters();
       using geodex::DegeneracyKind;
       const std::string name = path.substr(path.find_last_of('/') + 1);
-      std::printf("| %s (v%u) | %zu | %llu | %llu | %.1f %% | %.1f %% | %.1f %% | %.2f %% | %.4f %% | "
-                  "%.4f %% | %.1f %% | %.1f %% |\n",
+      const auto count = [&](DegeneracyKind k) { return static_cast<unsigned long long>(c[k]); };
+      std::printf("| %s (v%u) | %zu | %llu | %llu | %llu | %llu | %llu | %llu | %.1f %% | %.1f %% | "
+                  "%.1f %% | %.2f %% | %.4f %% | %.4f %% | %.1f %% | %.1f %% |\n",
                   name.c_str(), static_cast<unsigned>(source), mesh.numFaces(),
-                  static_cast<unsigned long long>(c.cases),
-                  static_cast<unsigned long long>(c.geometricTotal()),
+                  static_cast<unsigned long long>(c.cases), count(DegeneracyKind::G1),
+                  count(DegeneracyKind::G2), count(DegeneracyKind::G3), count(DegeneracyKind::G4),
+                  count(DegeneracyKind::G5),
                   percent(c[DegeneracyKind::D1], c.cases), percent(c[DegeneracyKind::D2], c.cases),
                   percent(c[DegeneracyKind::D3], c.cases), percent(c[DegeneracyKind::D4], c.cases),
                   percent(c.geometricTotal(), c.cases), percent(rules.paperRuleCases, rules.cases),
