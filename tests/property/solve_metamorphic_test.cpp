@@ -256,6 +256,72 @@ RC_GTEST_PROP(Metamorphic, RelabellingVerticesAndReorderingFacesLeaveDistancesUn
     RC_FAIL(mismatch("after relabelling (original vertex numbers)", back, before.distances, diag));
 }
 
+// ===  Mirror image ===============================================================================
+//
+// Edges run from the smaller vertex number to the larger, so numbering the vertices backwards turns
+// every edge around and every face frame into its mirror image (x → L − x): the solve is the
+// mirror-image run of the same surface. Its distances are the same; and every propagation case of
+// the first solve, mirrored, must be decided by the mirrored Fig. 6 leaf (G2 ↔ G3, G4 ↔ G5, left
+// ↔ right of the wedge), so that the mirrored cases count the mirrored degeneracies — save cases
+// the exact predicates call ambiguous, where rounding L − x may decide either way. The Fig. 6
+// properties run generated cases mirrored too; this runs the cases real solves meet.
+Fig6Branch mirrorOf(Fig6Branch b) {
+  switch (b) {
+    case Fig6Branch::G2: return Fig6Branch::G3;
+    case Fig6Branch::G3: return Fig6Branch::G2;
+    case Fig6Branch::G4: return Fig6Branch::G5;
+    case Fig6Branch::G5: return Fig6Branch::G4;
+    case Fig6Branch::LeftOfWedge: return Fig6Branch::RightOfWedge;
+    case Fig6Branch::RightOfWedge: return Fig6Branch::LeftOfWedge;
+    default: return b;
+  }
+}
+
+RC_GTEST_PROP(Metamorphic, MirroringTheMeshMirrorsTheDecisionsAndKeepsTheDistances, ()) {
+  const MeshCase mc = *gen::meshCase();
+  const Mesh mesh(mc.soup);
+  const SourceCase src = *gen::sourcePoint(mesh);
+  RC_TAG(mc.family, src.kind);
+  const std::size_t nv = mc.soup.positions.size();
+  const auto backwards = [nv](Index v) { return static_cast<Index>(nv - 1 - v); };
+  TriangleSoup mirror;
+  mirror.positions.resize(nv);
+  for (std::size_t v = 0; v < nv; ++v) mirror.positions[backwards(static_cast<Index>(v))] = mc.soup.positions[v];
+  for (const auto& c : mc.soup.faces) mirror.faces.push_back({backwards(c[0]), backwards(c[1]), backwards(c[2])});
+  SurfacePoint mapped = src.point;
+  if (src.point.kind != SurfacePoint::Kind::Face) mapped.vertex = backwards(src.point.vertex);
+  if (src.point.kind == SurfacePoint::Kind::Edge) mapped.toVertex = backwards(src.point.toVertex);
+
+  RecordCases recorded;
+  const Solved base = solveChecked(mesh, {src.point}, nullptr, &recorded);
+  const Solved mirrored = solveChecked(Mesh(mirror), {mapped});
+  std::vector<double> back(nv);
+  for (std::size_t v = 0; v < nv; ++v) back[v] = mirrored.distances[backwards(static_cast<Index>(v))];
+  const double diag = mesh.boundingBoxDiagonal();
+  recordAccuracy("mirror image", maxDifference(back, base.distances) / diag);
+  if (!(maxDifference(back, base.distances) <= kTwoSolves * diag))
+    RC_FAIL(mismatch("numbered backwards (original vertex numbers)", back, base.distances, diag));
+
+  for (const auto& [w, branch] : recorded.cases) {
+    const auto m = gen::detail::mirrored(w);
+    if (!m) continue;
+    const Fig6Branch got = propagateLocal(*m).branch;
+    if (got == mirrorOf(branch)) continue;
+    const auto exact = exactFig6Branches(w, ExactMode::Tolerance),
+               exactMirror = exactFig6Branches(*m, ExactMode::Tolerance);
+    if (exact.size() == 1 && exactMirror.size() == 1 && exactMirror[0] == mirrorOf(exact[0])) {
+      std::ostringstream os;
+      os.precision(17);
+      os << "a case of this solve decided " << name(branch) << " has its mirror image decided "
+         << name(got) << ", not " << name(mirrorOf(branch)) << ", though exact predicates decide the two as "
+         << name(exact[0]) << " and " << name(exactMirror[0]) << ": LocalWindow{" << w.edgeLength
+         << ", Vec2(" << w.apex.x() << ", " << w.apex.y() << "), " << w.b0 << ", " << w.b1
+         << ", Vec2(" << w.source.x() << ", " << w.source.y() << ")}";
+      RC_FAIL(os.str());
+    }
+  }
+}
+
 // ===  Coplanar refinement ========================================================================
 //
 // Splitting a face 1→3 at an interior point, or an edge (and its one or two faces) at a point
