@@ -1,0 +1,347 @@
+#!/usr/bin/env python3
+"""Mutation testing: plant one bug at a time in solver/ and verify/, rebuild, and see which test
+catches it. Not part of ./test.sh; it runs in its own git worktree and never touches the checkout.
+
+  scripts/mutate.sh [--list] [--only ID,...] [--max N] [--seed S] [--worktree DIR]
+                    [--results FILE] [--report FILE] [--no-debug]
+
+The mutants are made by operators that look like real geometry bugs, at sites found in the
+source (a fixed, seeded choice, so a run is reproducible and can be resumed):
+
+  flip-comparison     < <-> <=, > <-> >=            (a tie or a boundary decided the other way)
+  negate-condition    if (C) -> if (!(C))
+  and-or              && <-> ||
+  drop-statement      a statement that assigns, counts or calls, removed
+  swap-mirrored       the two arms of a ternary whose arms are mirror images (b0/b1, v0/v2, G2/G3,
+                      prev/next, front/back, ...) exchanged
+  tolerance-x1000     a tolerance of tolerance.h made 1000x larger, and 1000x smaller
+  swap-subtraction    a - b -> b - a
+  end-to-edge-end     a computed end (b0 = ..., b1 = ...) replaced with the edge's end
+
+Each mutant is built with the release preset and tested in order of cost, stopping at the first
+failure: the unit tests, the properties (CI's seed), then the whole release ctest (which replays
+the corpus). A mutant the release tests miss is built and tested with the debug preset (checks
+on). A mutant that does not compile is reported as such and left out of the score.
+
+Results go to FILE (default build/mutation/results.jsonl, one JSON object per mutant, reused: a
+mutant already there with the same source line is not run again), the report to
+docs/mutation.md (every mutant, its verdict and the test that killed it).
+"""
+
+import argparse
+import hashlib
+import json
+import os
+import random
+import re
+import shutil
+import subprocess
+import sys
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+SOLVER_FILES = ["solver/src/%s" % f for f in (
+    "edge_intervals.cpp", "geodesic_solver.cpp", "propagate.cpp", "path.cpp", "surface_point.cpp",
+    "mesh.cpp", "interval_pool.cpp")] + [
+    "solver/include/geodex/edge_intervals.h", "solver/include/geodex/interval.h",
+    "solver/include/geodex/predicates.h", "solver/include/geodex/bucket_queue.h"]
+TOLERANCE_FILE = "solver/include/geodex/tolerance.h"
+VERIFY_FILES = ["verify/src/%s" % f for f in ("invariant_checker.cpp", "oracles.cpp", "exact_predicates.cpp")]
+
+MIRRORED_PAIRS = [("b0", "b1"), ("v0", "v2"), ("G2", "G3"), ("G4", "G5"), ("prev", "next"),
+                  ("front", "back"), ("Left", "Right"), ("Start", "End"), ("edgeToV0", "edgeToV2"),
+                  ("first", "last"), ("lo", "hi"), ("onE1", "onE2"), ("e1", "e2")]
+DECLARATION = re.compile(r"^\s*(const |constexpr |static |auto |double |float |bool |int |std::|Index |"
+                         r"Interval |Vec2 |Vec3 |return |using |template|typedef|case |default:)")
+
+
+def code_part(line):
+    """The line without its // comment (strings in this code base hold no //)."""
+    return line.split("//", 1)[0]
+
+
+def matching_paren(code, open_at):
+    """The index of the ')' closing the '(' at open_at, or None when it is not on this line."""
+    depth = 0
+    for i in range(open_at, len(code)):
+        depth += {"(": 1, ")": -1}.get(code[i], 0)
+        if depth == 0:
+            return i
+    return None
+
+
+def sites(path, text):
+    """(line number, operator, original line, mutated line) for every candidate site in a file."""
+    out = []
+    in_block_comment = False
+    for n, line in enumerate(text.split("\n"), start=1):
+        stripped = line.strip()
+        if in_block_comment:
+            in_block_comment = "*/" not in stripped
+            continue
+        if stripped.startswith("/*"):
+            in_block_comment = "*/" not in stripped
+            continue
+        if (not stripped or stripped.startswith(("//", "#", "///")) or "GEODEX_CHECK" in line
+                or "GEODEX_REQUIRE" in line or "<<" in line or "static_assert" in line):
+            continue
+        code = code_part(line)
+        rest = line[len(code):]
+        for m in re.finditer(r"(?<=\s)(<=|>=|<|>)(?=\s)", code):
+            op = m.group(1)
+            flipped = {"<": "<=", "<=": "<", ">": ">=", ">=": ">"}[op]
+            out.append((n, "flip-comparison", line, code[:m.start()] + flipped + code[m.end():] + rest))
+        for m in re.finditer(r"(?<=\s)(&&|\|\|)(?=\s)", code):
+            other = "||" if m.group(1) == "&&" else "&&"
+            out.append((n, "and-or", line, code[:m.start()] + other + code[m.end():] + rest))
+        m = re.match(r"^\s*(?:\} else )?if \(", code)
+        if m and "constexpr" not in code:
+            close = matching_paren(code, m.end() - 1)
+            if close is not None:
+                out.append((n, "negate-condition", line,
+                            code[:m.end()] + "!(" + code[m.end():close] + ")" + code[close:] + rest))
+        if (code.rstrip().endswith(";") and not DECLARATION.match(code) and code.count("(") == code.count(")")
+                and re.match(r"^\s*(\+\+|--|[A-Za-z_][\w.\->\[\]]*\s*(=|\+=|-=|\*=|\(|\+\+|--))", code)
+                and not re.match(r"^\s*\w+\s+\w+\s*=", code)):
+            indent = re.match(r"^\s*", line).group(0)
+            out.append((n, "drop-statement", line, indent + "; // (dropped)"))
+        if "?" in code and ":" in code:
+            for a, b in MIRRORED_PAIRS:
+                pat = re.compile(r"\?\s*([^:?]*\b%s\b[^:?]*?)\s*:\s*([^;:?)]*\b%s\b[^;:?)]*)" % (a, b))
+                mm = pat.search(code) or re.compile(
+                    r"\?\s*([^:?]*\b%s\b[^:?]*?)\s*:\s*([^;:?)]*\b%s\b[^;:?)]*)" % (b, a)).search(code)
+                if mm:
+                    swapped = code[:mm.start()] + "? " + mm.group(2).strip() + " : " + mm.group(1).strip() + code[mm.end():]
+                    out.append((n, "swap-mirrored", line, swapped + rest))
+                    break
+        for m in re.finditer(r"\b([A-Za-z_][\w.]*(?:\(\))?|\w+\[\w+\])\s-\s([A-Za-z_][\w.]*(?:\(\))?)(?=[\s;,)])", code):
+            if m.group(1) == m.group(2):
+                continue
+            out.append((n, "swap-subtraction", line,
+                        code[:m.start()] + m.group(2) + " - " + m.group(1) + code[m.end():] + rest))
+        m = re.match(r"^(\s*[\w.\->]*\bb([01])\s*=\s*)([^;=]+);\s*$", code)
+        if m and "edgeLength" in text and m.group(3).strip() not in ("0.0", "edgeLength"):
+            end = "0.0" if m.group(2) == "0" else "edgeLength"
+            out.append((n, "end-to-edge-end", line, m.group(1) + end + ";" + rest))
+    return out
+
+
+def tolerance_sites(text):
+    out = []
+    for n, line in enumerate(text.split("\n"), start=1):
+        m = re.match(r"^(inline constexpr double k\w+ = )(.+);(.*)$", line)
+        if not m:
+            continue
+        for factor in ("1e3", "1e-3"):
+            out.append((n, "tolerance-x1000", line, "%s(%s) * %s;%s" % (m.group(1), m.group(2), factor, m.group(3))))
+    return out
+
+
+def catalogue(seed):
+    """Every mutant of this run: all tolerance mutants, a seeded sample of the other sites."""
+    rng = random.Random(seed)
+    mutants = []
+
+    def add(path, found, count):
+        by_operator = {}
+        for s in found:
+            by_operator.setdefault(s[1], []).append(s)
+        chosen = []
+        # Round-robin over the operators so that every kind of bug is planted in every file.
+        pools = {k: rng.sample(v, len(v)) for k, v in sorted(by_operator.items())}
+        while len(chosen) < count and any(pools.values()):
+            for k in sorted(pools):
+                if pools[k] and len(chosen) < count:
+                    chosen.append(pools[k].pop())
+        for n, op, before, after in sorted(chosen):
+            digest = hashlib.sha1((path + before + after).encode()).hexdigest()[:8]
+            mutants.append({"id": "%s:%d:%s:%s" % (os.path.basename(path), n, op, digest), "file": path,
+                            "line": n, "operator": op, "before": before, "after": after})
+
+    quota = {"solver/src/edge_intervals.cpp": 24, "solver/src/geodesic_solver.cpp": 14,
+             "solver/src/propagate.cpp": 16, "solver/src/path.cpp": 5, "solver/src/surface_point.cpp": 3,
+             "solver/src/mesh.cpp": 4, "solver/src/interval_pool.cpp": 2,
+             "solver/include/geodex/edge_intervals.h": 6, "solver/include/geodex/interval.h": 3,
+             "solver/include/geodex/predicates.h": 3, "solver/include/geodex/bucket_queue.h": 2,
+             "verify/src/invariant_checker.cpp": 12, "verify/src/oracles.cpp": 6,
+             "verify/src/exact_predicates.cpp": 4}
+    for path in SOLVER_FILES + VERIFY_FILES:
+        with open(os.path.join(ROOT, path)) as f:
+            add(path, sites(path, f.read()), quota.get(path, 2))
+    with open(os.path.join(ROOT, TOLERANCE_FILE)) as f:
+        tol = tolerance_sites(f.read())
+    add(TOLERANCE_FILE, tol, len(tol))
+    return mutants
+
+
+def run(cmd, cwd, timeout, log):
+    """(exit code, output); 124 on a timeout."""
+    try:
+        p = subprocess.run(cmd, cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=timeout,
+                           text=True, errors="replace")
+        out = p.stdout
+        code = p.returncode
+    except subprocess.TimeoutExpired as e:
+        out = (e.stdout or b"").decode(errors="replace") if isinstance(e.stdout, bytes) else (e.stdout or "")
+        code = 124
+    with open(log, "a") as f:
+        f.write("$ %s\n%s\n" % (" ".join(cmd), out[-20000:]))
+    return code, out
+
+
+def first_failure(output):
+    """The name of the first failing test in gtest or ctest output."""
+    for pattern in (r"\[  FAILED  \] (\S+) \(", r"^\s*\d+ - (\S+) \(Failed|Timeout|Subprocess", r"\[  FAILED  \] (\S+)"):
+        m = re.search(pattern, output, re.M)
+        if m:
+            return m.group(1)
+    return "?"
+
+
+def test_preset(work, preset, log):
+    """(killed?, by what) for the current source in the worktree."""
+    bindir = os.path.join(work, "build", preset, "bin")
+    stages = [
+        ("unit", [os.path.join(bindir, "geodex_unit_tests"), "--gtest_brief=1"], 600),
+        ("property", [os.path.join(bindir, "geodex_property_tests"), "--gtest_brief=1"], 1200),
+        ("ctest", ["ctest", "--preset", preset, "-j2", "--timeout", "600", "--stop-on-failure"], 3600),
+    ]
+    env_rc = os.environ.get("RC_PARAMS")
+    os.environ["RC_PARAMS"] = "seed=12345 max_success=200 noshrink=1"
+    try:
+        for name, cmd, timeout in stages:
+            if not os.path.exists(cmd[0]) and name != "ctest":
+                continue
+            code, out = run(cmd, work, timeout, log)
+            if code == 124:
+                return True, "%s (%s): timeout" % (preset, name)
+            if code != 0:
+                return True, "%s: %s" % (preset, first_failure(out))
+        return False, ""
+    finally:
+        if env_rc is None:
+            del os.environ["RC_PARAMS"]
+        else:
+            os.environ["RC_PARAMS"] = env_rc
+
+
+def build(work, preset, log):
+    code, _ = run(["cmake", "--build", "--preset", preset, "-j2"], work, 3600, log)
+    return code == 0
+
+
+def mutate_one(work, m, presets, log):
+    path = os.path.join(work, m["file"])
+    with open(path) as f:
+        lines = f.read().split("\n")
+    if lines[m["line"] - 1] != m["before"]:
+        return {"verdict": "stale", "by": "the source line changed"}
+    lines[m["line"] - 1] = m["after"]
+    with open(path, "w") as f:
+        f.write("\n".join(lines))
+    try:
+        for preset in presets:
+            if not build(work, preset, log):
+                return {"verdict": "did not compile", "by": ""}
+            killed, by = test_preset(work, preset, log)
+            if killed:
+                return {"verdict": "killed", "by": by}
+        return {"verdict": "survived", "by": ""}
+    finally:
+        subprocess.run(["git", "checkout", "--", m["file"]], cwd=work, check=True)
+
+
+def report(mutants, results, path, seed):
+    rows = []
+    counts = {}
+    for m in mutants:
+        r = results.get(m["id"])
+        verdict = r["verdict"] if r else "not run"
+        counts[verdict] = counts.get(verdict, 0) + 1
+        change = "`%s` → `%s`" % (code_part(m["before"]).strip()[:70], code_part(m["after"]).strip()[:70])
+        rows.append("| %s | %s:%d | %s | %s | %s | %s |" % (
+            m["id"].rsplit(":", 1)[1], m["file"], m["line"], m["operator"], change.replace("|", "\\|"),
+            verdict, (r or {}).get("by", "").replace("|", "\\|")))
+    scored = counts.get("killed", 0) + counts.get("survived", 0)
+    with open(path, "w") as f:
+        f.write("# Mutation testing\n\n")
+        f.write("Made by `scripts/mutate.sh --seed %d` (scripts/mutate.py says how). One planted bug at a time, "
+                "in its own git worktree: built with the release preset and tested (unit tests, properties with "
+                "CI's seed, then the whole release ctest with the corpus replay), and when those miss it, with the "
+                "debug preset (checks on).\n\n" % seed)
+        f.write("Killed %d of %d scored mutants (%.1f %%); %d did not compile; %d not run yet.\n\n" % (
+            counts.get("killed", 0), scored, 100.0 * counts.get("killed", 0) / scored if scored else 0.0,
+            counts.get("did not compile", 0), counts.get("not run", 0)))
+        f.write("| id | where | operator | change | verdict | killed by |\n|---|---|---|---|---|---|\n")
+        f.write("\n".join(rows) + "\n")
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--list", action="store_true", help="print the catalogue and stop")
+    ap.add_argument("--only", help="comma-separated mutant ids (the hash part is enough)")
+    ap.add_argument("--max", type=int, help="run at most this many mutants not run before")
+    ap.add_argument("--seed", type=int, default=1)
+    ap.add_argument("--worktree", default=os.path.join(os.environ.get("TMPDIR", "/tmp"), "geodex-mutate"))
+    ap.add_argument("--results", default=os.path.join(ROOT, "build", "mutation", "results.jsonl"))
+    ap.add_argument("--report", default=os.path.join(ROOT, "docs", "mutation.md"))
+    ap.add_argument("--no-debug", action="store_true", help="release tests only")
+    a = ap.parse_args()
+
+    mutants = catalogue(a.seed)
+    if a.list:
+        for m in mutants:
+            print("%s\n  - %s\n  + %s" % (m["id"], m["before"].strip(), m["after"].strip()))
+        solver = sum(1 for m in mutants if m["file"].startswith("solver/"))
+        print("%d mutants: %d over solver/, %d over verify/" % (len(mutants), solver, len(mutants) - solver))
+        return 0
+    if a.only:
+        wanted = set(a.only.split(","))
+        mutants = [m for m in mutants if m["id"] in wanted or m["id"].rsplit(":", 1)[1] in wanted]
+
+    results = {}
+    if os.path.exists(a.results):
+        with open(a.results) as f:
+            for line in f:
+                r = json.loads(line)
+                results[r["id"]] = r
+    todo = [m for m in mutants if m["id"] not in results]
+    if a.max is not None:
+        todo = todo[:a.max]
+
+    if todo:
+        head = subprocess.run(["git", "rev-parse", "HEAD"], cwd=ROOT, stdout=subprocess.PIPE, text=True,
+                              check=True).stdout.strip()
+        if not os.path.isdir(a.worktree):
+            subprocess.run(["git", "worktree", "add", "--detach", a.worktree, head], cwd=ROOT, check=True)
+        subprocess.run(["git", "checkout", "--detach", head], cwd=a.worktree, check=True)
+        shared = os.path.join(os.path.dirname(a.worktree), "shared")
+        if not os.path.exists(shared) and os.path.isdir(os.path.join(os.path.dirname(ROOT), "shared")):
+            os.symlink(os.path.join(os.path.dirname(ROOT), "shared"), shared)
+        presets = ["release"] if a.no_debug else ["release", "debug"]
+        for preset in presets:
+            subprocess.run(["cmake", "--preset", preset], cwd=a.worktree, check=True, stdout=subprocess.DEVNULL)
+            if not build(a.worktree, preset, os.devnull):
+                sys.exit("the unmutated source does not build with the %s preset" % preset)
+        os.makedirs(os.path.dirname(a.results), exist_ok=True)
+        log = os.path.join(os.path.dirname(a.results), "log.txt")
+        for i, m in enumerate(todo, start=1):
+            start = time.time()
+            sys.stderr.write("[%d/%d] %s ... " % (i, len(todo), m["id"]))
+            sys.stderr.flush()
+            with open(log, "a") as f:
+                f.write("\n=== %s\n- %s\n+ %s\n" % (m["id"], m["before"], m["after"]))
+            r = mutate_one(a.worktree, m, presets, log)
+            r.update({"id": m["id"], "seconds": round(time.time() - start, 1), "commit": head})
+            results[m["id"]] = r
+            with open(a.results, "a") as f:
+                f.write(json.dumps(r) + "\n")
+            sys.stderr.write("%s %s (%.0f s)\n" % (r["verdict"], r["by"], r["seconds"]))
+    report(catalogue(a.seed), results, a.report, a.seed)
+    survived = [m["id"] for m in catalogue(a.seed) if results.get(m["id"], {}).get("verdict") == "survived"]
+    print("report: %s; survivors: %s" % (a.report, ", ".join(survived) or "none"))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
