@@ -58,28 +58,6 @@ bool sameInterval(const Interval& a, const Interval& b) {
          a.origin == b.origin && a.side == b.side && a.pending() == b.pending();
 }
 
-// What an update rewrote: after[afterLo, afterHi) in place of before[beforeLo, beforeHi), the
-// intervals outside being the same ones in both lists. Taken from the report's [first, last) and
-// then verified interval by interval (a comparison, far cheaper than the invariants), so that a
-// bug writing outside the range it reports is still seen: it gets the whole lists.
-struct ChangedRange {
-  std::size_t afterLo, afterHi, beforeLo, beforeHi;
-};
-
-ChangedRange changedRange(const EdgeUpdateEvent& e) {
-  const ChangedRange whole{0, e.after.size(), 0, e.before.size()};
-  const std::size_t first = e.report.first, last = e.report.last;
-  if (first > last || last > e.after.size()) return whole;
-  const std::size_t suffix = e.after.size() - last;
-  if (first + suffix > e.before.size()) return whole;
-  const std::size_t beforeHi = e.before.size() - suffix;
-  for (std::size_t i = 0; i < first; ++i)
-    if (!sameInterval(e.before[i], e.after[i])) return whole;
-  for (std::size_t k = 0; k < suffix; ++k)
-    if (!sameInterval(e.before[beforeHi + k], e.after[last + k])) return whole;
-  return {first, last, first, beforeHi};
-}
-
 }  // namespace
 
 InvariantChecker::InvariantChecker(CheckLevel level, bool throwOnViolation)
@@ -188,6 +166,30 @@ std::string InvariantChecker::checkListRange(std::span<const Interval> list, std
   return "";
 }
 
+// ===  One edge update ============================================================================
+
+// What an update rewrote: after[afterLo, afterHi) in place of before[beforeLo, beforeHi), the
+// intervals outside being the same ones in both lists. Taken from the report's [first, last) and
+// then verified interval by interval (a comparison, far cheaper than the invariants), so that a
+// bug writing outside the range it reports is still seen: it gets the whole lists.
+struct InvariantChecker::ChangedRange {
+  std::size_t afterLo, afterHi, beforeLo, beforeHi;
+};
+
+InvariantChecker::ChangedRange InvariantChecker::changedRange(const EdgeUpdateEvent& e) {
+  const ChangedRange whole{0, e.after.size(), 0, e.before.size()};
+  const std::size_t first = e.report.first, last = e.report.last;
+  if (first > last || last > e.after.size()) return whole;
+  const std::size_t suffix = e.after.size() - last;
+  if (first + suffix > e.before.size()) return whole;
+  const std::size_t beforeHi = e.before.size() - suffix;
+  for (std::size_t i = 0; i < first; ++i)
+    if (!sameInterval(e.before[i], e.after[i])) return whole;
+  for (std::size_t k = 0; k < suffix; ++k)
+    if (!sameInterval(e.before[beforeHi + k], e.after[last + k])) return whole;
+  return {first, last, first, beforeHi};
+}
+
 void InvariantChecker::onEdgeUpdate(const EdgeUpdateEvent& e) {
   // What the update rewrote, with one neighbour on each side: an interval's ε and the pairs it
   // forms involve its neighbours, so those are checked again too.
@@ -195,12 +197,23 @@ void InvariantChecker::onEdgeUpdate(const EdgeUpdateEvent& e) {
   const std::size_t lo = changed.afterLo >= 1 ? changed.afterLo - 1 : 0;
   const std::size_t hi = std::min(changed.afterHi + 1, e.after.size());
 
-  // --- cheap tier: the list is well formed
+  checkWellFormed(e, lo, hi);
+  checkContinuityAtEq1(e, lo, hi);
+  if (level_ != CheckLevel::Full) return;
+  checkPointwiseMin(e, changed, lo, hi);
+}
+
+// Cheap tier: the list is well formed (sorted, in range, no overlap, no tiny gap or interval,
+// finite, a real source).
+void InvariantChecker::checkWellFormed(const EdgeUpdateEvent& e, std::size_t lo, std::size_t hi) {
   std::string why;
   const std::string broken = checkListRange(e.after, lo, hi, e.edgeLength, why);
   for (int id = Sorted; id <= RealSource; ++id) record(static_cast<Id>(id), broken != kNames[id], 0.0, why, &e);
+}
 
-  // --- cheap tier: the two neighbours agree at every Eq. 1 breakpoint
+// Cheap tier: the two neighbours agree at every Eq. 1 breakpoint.
+void InvariantChecker::checkContinuityAtEq1(const EdgeUpdateEvent& e, std::size_t lo,
+                                            std::size_t hi) {
   for (double x : e.report.eq1Breakpoints) {
     // Find the two intervals meeting at x (if steps 3–5 moved or merged the breakpoint away,
     // there is nothing left to compare). Eq. 1 solves inside the incoming range, which the
@@ -220,29 +233,38 @@ void InvariantChecker::onEdgeUpdate(const EdgeUpdateEvent& e) {
       record(ContinuousAtEq1, ok, err, why, &e);
     }
   }
+}
 
-  if (level_ != CheckLevel::Full) return;
-  // --- full tier: pointwise minimum of the old list and the incoming interval, sampled. Outside
-  //     the rewritten parts and the incoming range the list after is the list before, which is
-  //     the minimum there: the samples are taken where the two lists differ or the incoming
-  //     interval reaches, with the neighbours on each side.
-  const std::size_t beforeLo = changed.beforeLo >= 1 ? changed.beforeLo - 1 : 0;
-  const std::size_t beforeHi = std::min(changed.beforeHi + 1, e.before.size());
-  const std::span<const Interval> beforeNear = e.before.subspan(beforeLo, beforeHi - beforeLo);
-  const std::span<const Interval> afterNear = e.after.subspan(lo, hi - lo);
-  // Each function counts where it covers x up to the slack step 4 may sew (ε): a sewn end is
-  // part of the repaired list by contract.
-  // Step 4 sews up to sewLength, which can exceed ε by the ray-end precision (a 49-long edge's
-  // end gap of 4.9000000049e-10 was sewn against an ε of 4.9e-10:
-  // corpus/fuzz_edge_update/regress/pointwise-min-end-gap-sewn-up-to-the-ray-end-precision).
+// ===  Full tier: the pointwise minimum ===========================================================
+
+namespace {
+
+// Each function counts where it covers x up to the slack step 4 may sew (ε): a sewn end is
+// part of the repaired list by contract.
+// Step 4 sews up to sewLength, which can exceed ε by the ray-end precision (a 49-long edge's
+// end gap of 4.9000000049e-10 was sewn against an ε of 4.9e-10:
+// corpus/fuzz_edge_update/regress/pointwise-min-end-gap-sewn-up-to-the-ray-end-precision).
+// The slack is the largest ε of the intervals step 4 could sew with: it sews a gap below the ε
+// of either interval beside it, so a near window's end is carried across a gap as wide as a
+// far neighbour's ε (corpus/fuzz_edge_update/regress/pointwise-min-gap-sewn-by-the-far-neighbours-epsilon).
+// Steps 3–5 work on the rewritten part and its neighbours, which beforeNear holds.
+double sewingSlack(const EdgeUpdateEvent& e, std::span<const Interval> beforeNear) {
   double tiny = tol::kTinyIntervalRel * e.edgeLength;
   for (const Interval& w : beforeNear)
     tiny = std::max({tiny, tinyLength(w, e.edgeLength), sewLength(w, e.edgeLength)});
-  tiny = std::max({tiny, tinyLength(e.incoming, e.edgeLength), sewLength(e.incoming, e.edgeLength)});
-  // The slack is the largest ε of the intervals step 4 could sew with: it sews a gap below the ε
-  // of either interval beside it, so a near window's end is carried across a gap as wide as a
-  // far neighbour's ε (corpus/fuzz_edge_update/regress/pointwise-min-gap-sewn-by-the-far-neighbours-epsilon).
-  // Steps 3–5 work on the rewritten part and its neighbours, which beforeNear holds.
+  return std::max({tiny, tinyLength(e.incoming, e.edgeLength), sewLength(e.incoming, e.edgeLength)});
+}
+
+}  // namespace
+
+// The samples of the pointwise-minimum check, sorted, so that one sweep over each list finds the
+// intervals at every sample (rather than a binary search per sample and list, each a cache miss
+// or two).
+std::span<const double> InvariantChecker::pointwiseMinSamples(const EdgeUpdateEvent& e,
+                                                              const ChangedRange& changed,
+                                                              std::span<const Interval> beforeNear,
+                                                              std::span<const Interval> afterNear,
+                                                              double tiny) {
   // The uniform samples cover where the two lists differ and where the incoming interval reaches.
   // Beyond that the neighbours are the same intervals before and after (changedRange compared
   // them) and no incoming value is there, so the minimum holds by itself (their pieces still get
@@ -254,8 +276,6 @@ void InvariantChecker::onEdgeUpdate(const EdgeUpdateEvent& e) {
   for (const auto part : rewrittenParts)
     if (!part.empty()) from = std::min(from, part.front().b0), to = std::max(to, part.back().b1);
   from -= tiny, to += tiny;
-  // The samples, sorted, so that one sweep over each list finds the intervals at every sample
-  // (rather than a binary search per sample and list, each a cache miss or two).
   std::vector<double>& xs = samples_;
   xs.clear();
   const int uniform = 32;
@@ -278,13 +298,27 @@ void InvariantChecker::onEdgeUpdate(const EdgeUpdateEvent& e) {
   std::merge(xs.begin(), xs.begin() + static_cast<std::ptrdiff_t>(numUniform),
              xs.begin() + static_cast<std::ptrdiff_t>(numUniform), xs.end(), merged_.begin());
   xs.swap(merged_);
+  return samples_;
+}
+
+namespace {
+
+// The largest relative error of the list after against min(before, incoming) over the samples,
+// and where it is.
+struct PointwiseMinError {
+  double worst = 0.0;
+  std::array<double, 4> at{};  // x, the list's value, the strict and the loose minimum
+};
+
+PointwiseMinError worstPointwiseMinError(const EdgeUpdateEvent& e, std::span<const double> xs,
+                                         double tiny) {
   // The last interval of each list starting at or before the sample (-1: none), for sorted
   // lists as lastStartingBefore finds it; advanced from one sample to the next.
   std::ptrdiff_t kBefore = xs.empty() ? -1 : lastStartingBefore(e.before, xs.front());
   std::ptrdiff_t kAfter = xs.empty() ? -1 : lastStartingBefore(e.after, xs.front());
   const std::ptrdiff_t numBefore = std::ssize(e.before), numAfter = std::ssize(e.after);
   double worst = 0.0;
-  std::array<double, 4> worstAt{};  // x, the list's value, the strict and the loose minimum
+  std::array<double, 4> worstAt{};
   auto valueWithSlack = [&](const Interval& w, double x) {
     return x >= w.b0 - tiny && x <= w.b1 + tiny ? w.distanceAt(x) : INFINITY;
   };
@@ -359,17 +393,38 @@ void InvariantChecker::onEdgeUpdate(const EdgeUpdateEvent& e) {
     }
     if (!(err <= worst)) worst = err, worstAt = {x, got, strict, loose};
   }
+  return {worst, worstAt};
+}
+
+}  // namespace
+
+// Full tier: the list after is the pointwise minimum of the old list and the incoming interval,
+// sampled. Outside the rewritten parts and the incoming range the list after is the list before,
+// which is the minimum there: the samples are taken where the two lists differ or the incoming
+// interval reaches, with the neighbours on each side.
+void InvariantChecker::checkPointwiseMin(const EdgeUpdateEvent& e, const ChangedRange& changed,
+                                         std::size_t lo, std::size_t hi) {
+  const std::size_t beforeLo = changed.beforeLo >= 1 ? changed.beforeLo - 1 : 0;
+  const std::size_t beforeHi = std::min(changed.beforeHi + 1, e.before.size());
+  const std::span<const Interval> beforeNear = e.before.subspan(beforeLo, beforeHi - beforeLo);
+  const std::span<const Interval> afterNear = e.after.subspan(lo, hi - lo);
+  const double tiny = sewingSlack(e, beforeNear);
+  const std::span<const double> xs = pointwiseMinSamples(e, changed, beforeNear, afterNear, tiny);
+  const PointwiseMinError error = worstPointwiseMinError(e, xs, tiny);
   // (The message is written only when it is needed: this runs at every edge update.)
-  const bool ok = worst <= tol::kPointwiseMinRel;
+  const bool ok = error.worst <= tol::kPointwiseMinRel;
   std::string where;
   if (!ok) {
     std::ostringstream os;
-    os << std::setprecision(17) << "at x = " << worstAt[0] << " the list gives " << worstAt[1]
-       << " but min(before, incoming) is " << worstAt[2] << " (" << worstAt[3] << " with the sewing slack)";
+    os << std::setprecision(17) << "at x = " << error.at[0] << " the list gives " << error.at[1]
+       << " but min(before, incoming) is " << error.at[2] << " (" << error.at[3]
+       << " with the sewing slack)";
     where = os.str();
   }
-  record(PointwiseMin, ok, worst, where, &e);
+  record(PointwiseMin, ok, error.worst, where, &e);
 }
+
+// ===  End of the solve ===========================================================================
 
 void InvariantChecker::onFinish(const GeodesicSolver& solver) {
   if (level_ != CheckLevel::Full) return;

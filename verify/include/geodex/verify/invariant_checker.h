@@ -85,6 +85,18 @@ class InvariantChecker : public SolverObserver {
             ContinuousAtEq1, PointwiseMin, FullCoverage, VertexAgreement, kNumInvariants };
   void record(Id id, bool ok, double error, const std::string& why, const EdgeUpdateEvent* e);
 
+  // The checks of one edge update, in the order onEdgeUpdate makes them; [lo, hi) is the part of
+  // e.after they look at (what the update rewrote, with a neighbour on each side).
+  struct ChangedRange;
+  static ChangedRange changedRange(const EdgeUpdateEvent& e);
+  void checkWellFormed(const EdgeUpdateEvent& e, std::size_t lo, std::size_t hi);
+  void checkContinuityAtEq1(const EdgeUpdateEvent& e, std::size_t lo, std::size_t hi);
+  void checkPointwiseMin(const EdgeUpdateEvent& e, const ChangedRange& changed, std::size_t lo,
+                         std::size_t hi);
+  std::span<const double> pointwiseMinSamples(const EdgeUpdateEvent& e, const ChangedRange& changed,
+                                              std::span<const Interval> beforeNear,
+                                              std::span<const Interval> afterNear, double tiny);
+
   CheckLevel level_;
   bool throw_;
   std::vector<InvariantTally> tallies_;
