@@ -13,9 +13,8 @@
 //   - to a source in g (inside, on an edge or at a corner): |src − q|.
 // The cheapest is taken and the tracer moves to its end. Each step joins two points of one face,
 // so the path lies on the surface by construction: no window is followed out of the face it
-// covers (the old tracer walked from the point towards a window's source and asked whether that
-// source was inside the face, with a tolerance in absolute cross-product units; beside 1e5-long
-// thin triangles it accepted a source 1.58 outside one and cut through the air,
+// covers (walking from the point towards a window's source, with a tolerance deciding whether
+// that source is inside the face, cuts through the air beside long thin triangles:
 // tests/property/regressions_test.cpp case 7).
 //
 // Why the steps add up to the distance: a window w of edge e covering c got there through the
@@ -40,13 +39,10 @@
 // A zero-length step is never priced as a step: its value is the distance at the position itself,
 // which can come from the very point it leaves (a pseudo-source at the same position whose
 // distance was taken from that point), and it ties with the step that really goes on up to
-// rounding. It once won by 2.7e-11: from a vertex 5e-4 from a source, the window of a non-manifold
-// vertex at the same position on an edge through there, priced at the first vertex's own
-// distance, beat the straight step to the source; the path went on to the non-manifold vertex,
-// where the faces just crossed were barred (so that two zero-area faces could not hand the point
-// back and forth) and only an uphill one was left, and came back: 524288 too long
+// rounding: priced, it can win by rounding and lead the path to a point at the same position
+// from which only an uphill way is left, and back
 // (corpus/fuzz_solver/regress/path-length-non-manifold-vertex-beside-a-duplicate-walks-back).
-// Every step now moves the path by more than kPathSamePointRel × its face's longest edge, and its
+// Every step moves the path by more than kPathSamePointRel × its face's longest edge, and its
 // value, the length of a real path, is the smallest over the whole place: values never grow along
 // the path, so it never comes back to a place it has left.
 

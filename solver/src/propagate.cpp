@@ -78,10 +78,10 @@ LocalPropagation passThroughZeroAreaFace(const LocalWindow& w) {
 // extra child of an ambiguous branch, where a crossing off the segment means no child.)
 // Measured from q, not from s: the same line, but q − a is a face-sized vector where s − a is as
 // long as the source is far, and its cross product with the ray then cancels down to rounding.
-// From s, a window end 6.4e-10 from v0 seen from 2.9e7 away (below the ulp of the ray's
-// direction) crossed e1 exactly at q, not beyond it, and the G2 needle's e1 — which every ray
-// of the window crosses — got nothing (corpus/fuzz_propagation/regress/coverage-G2-needle-e1-
-// lost-window-end-below-far-source-resolution).
+// From s, a window end nearer v0 than the ulp of a far source's ray direction crosses e1 exactly
+// at q, not beyond it, and a G2 needle's e1 — which every ray of the window crosses — gets
+// nothing (corpus/fuzz_propagation/regress/coverage-G2-needle-e1-lost-window-end-below-far-
+// source-resolution).
 std::optional<double> forwardHit(const Vec2& s, const Vec2& q, const Vec2& a, const Vec2& b) {
   const Vec2 d = q - s;
   const Vec2 e = b - a;
@@ -133,8 +133,8 @@ LocalPropagation throughWedge(const LocalWindow& w, double scale) {
   // Where the boundary rays leave through e1 and e2. A ray through a corner of the face leaves
   // exactly there: the ray through b0 = v0 meets e1 at its start, the one through b1 = v2 meets
   // e2 at its end, whatever its angle. Computed, that crossing is ill-conditioned when the ray
-  // grazes the edge (error ≈ rounding / angle): a ray 1.1e-11 rad off a line of grid edges
-  // through a flat vertex put it 5e-6 short of the vertex, and a far window claimed the stretch
+  // grazes the edge (error ≈ rounding / angle): along a line of grid edges through a flat vertex
+  // it falls short of the vertex, and a far window claims the stretch
   // (corpus/fuzz_solver/regress/upper-bound-face-source-2e-11-from-flat-vertex).
   const auto b0OnE1 = [&] { return b0IsV0 ? 0.0 : pred::rayHitsSegment(s, b0, v0, v1); };
   const auto b1OnE2 = [&] { return b1IsV2 ? 1.0 : pred::rayHitsSegment(s, b1, v1, v2); };
@@ -143,8 +143,8 @@ LocalPropagation throughWedge(const LocalWindow& w, double scale) {
   //     it. "Collinear" is an angle, and a needle seen end-on from far away is collinear with
   //     everything; but rays that have passed the window head away from v1, so none of G2–G5
   //     applies: the whole wedge leaves through the edge on its side of travel (e1 heading
-  //     towards v0, e2 towards v2), as in (4)/(5). G4 handed the needle's e1 whole to a source
-  //     beyond its apex, and the apex came out 64 short of its distance 1.36e7
+  //     towards v0, e2 towards v2), as in (4)/(5). Taken as G4, the needle's e1 would go whole
+  //     to a source beyond its apex, and the apex would come out short of its distance
   //     (corpus/fuzz_two_faces/regress/two-face-distance-needle-apex-between-far-source-and-window).
   const Side sideB0 = pred::sideOfRay(s, b0, v1);
   const Side sideB1 = pred::sideOfRay(s, b1, v1);
@@ -214,13 +214,13 @@ LocalPropagation throughWedge(const LocalWindow& w, double scale) {
 
 LocalPropagation propagateLocal(const LocalWindow& w) {
   // A face far from unit size is decided at unit scale (atUnitScale), so that the collinearity
-  // tests' products of four lengths (sideOfRay) neither under- nor overflow: a face at 1e-106
-  // decided G2 where the exact tree says G3 (corpus/fuzz_propagation/regress/exact-predicates-
-  // face-at-1e-106-fourth-powers-underflow). Inside the band the configuration is used as it is:
-  // scaling by a power of two commutes with every operation here (the square roots are of squares) while no product
-  // leaves the normal range, so either way gives the same bits unless a value is 2^100 times
-  // smaller than the face — far below anything the solver keeps (D1). atUnitScale lands in the
-  // band, so this recurses once at most.
+  // tests' products of four lengths (sideOfRay) neither under- nor overflow: at 1e-106 they
+  // underflow, and the tree decides G2 where the exact one says G3 (corpus/fuzz_propagation/
+  // regress/exact-predicates-face-at-1e-106-fourth-powers-underflow). Inside the band the
+  // configuration is used as it is: scaling by a power of two commutes with every operation here
+  // (the square roots are of squares) while no product leaves the normal range, so either way
+  // gives the same bits unless a value is 2^100 times smaller than the face — far below anything
+  // the solver keeps (D1). atUnitScale lands in the band, so this recurses once at most.
 #ifndef GEODEX_NO_MESH_UNITS  // (defined in a bench-only build: solver/CMakeLists.txt)
   if (farFromUnitSize(w)) [[unlikely]] return propagateLocal(atUnitScale(w));
 #endif
@@ -285,18 +285,17 @@ ChildInterval childInterval(const LocalWindow& w, const LocalChild& c, const Chi
   // The source lies on the crossed face's side of the new edge (the rays leave the face through
   // it); rounding can put it a hair across, which is a source on the line. Clearly across, the
   // rays cannot leave through that edge at all, and the child is dropped (and counted by the
-  // solver): clamped onto the line, such a source stood 1.5e-8 from a corner 5.2e6 away from it
-  // when G5 handed a needle seen end-on its short side (corpus/fuzz_two_faces/regress/two-face-
-  // distance-needle-seen-end-on-from-far-source). Fig. 6's case (1b) now decides that needle
-  // itself; this stays as the safety net for any other ε-decision that names an edge the wedge
-  // cannot reach. Through a zero-area face "across" has no meaning: the source's distance from
-  // the common line is its height.
+  // solver): clamped onto the line, such a source would stand beside a corner it is really far
+  // from (corpus/fuzz_two_faces/regress/two-face-distance-needle-seen-end-on-from-far-source).
+  // Fig. 6's case (1b) decides that needle itself; this is the safety net for any other
+  // ε-decision that names an edge the wedge cannot reach. Through a zero-area face "across" has
+  // no meaning: the source's distance from the common line is its height.
   // The face lies right of e1 (v0→v1) and of e2 (v1→v2): v1 is above e0, so v0, v1, v2 turn
   // clockwise. Taken from the edge's direction, not from a cross product with the third vertex:
-  // for a needle seen from its far end that cross product is below its own rounding, and a
-  // backward e1 from an apex 2.9e6 away found v2 (1.6e-10 off its line) on the wrong side and
-  // dropped the only child of a source 8 inside the face (corpus/fuzz_propagation/regress/
-  // coverage-child-dropped-interior-side-of-backward-e1-taken-from-far-apex).
+  // for a needle seen from its far end that cross product is below its own rounding, can put v2
+  // on the wrong side of a backward e1, and then drops the only child of a source well inside
+  // the face (corpus/fuzz_propagation/regress/coverage-child-dropped-interior-side-of-backward-
+  // e1-taken-from-far-apex).
   const double inward = e.forward ? -h : h;
   if (!oneLine && inward < 0.0 &&
       -inward > std::max(tol::kCoincideRel * localScale(w), tol::kCollinearSin * rel.norm())) {

@@ -3,14 +3,14 @@
 // in key order and, inside a bucket, first in, first out. Window propagation is correct in any
 // order (an interval that a later, shorter one trims has its children trimmed too), so the strict
 // order of a heap only buys fewer wasted propagations; with buckets of half an edge that waste is
-// nil on the meshes we measured, while a push and a pop cost O(1) (Xu et al. 2015, "fast
-// wavefront propagation", make the same trade). Measured against a radix heap in this place, same
-// run, interleaved: 82K-face icosphere 1765 -> 1290 ms, bunny00 1090 -> 1015 ms, the windows
-// created unchanged to 0.1%.
+// nil on our benchmark meshes, while a push and a pop cost O(1) (Xu et al. 2015, "fast wavefront
+// propagation", make the same trade). Against a radix heap in this place a solve takes 1290
+// instead of 1765 ms on the 82K-face icosphere and 1015 instead of 1090 ms on bunny00, with the
+// windows created the same to 0.1%.
 //
 // A bucket is a chain of fixed-size pages from a shared free list, so the queue holds memory for
-// the entries queued now, not for the most any bucket ever held (with a vector per bucket that
-// was 1.8 GB on the 871K-face dragon, where a bucket reaches 131,072 entries).
+// the entries queued now, not for the most any bucket ever held (a vector per bucket would hold
+// 1.8 GB on the 871K-face dragon, where a bucket reaches 131,072 entries).
 //
 // lowerBound(): no key still queued is below it (a key below the current bucket when pushed —
 // rounding, or an interval Algorithm 2 re-opened — is filed in the current bucket).
@@ -36,8 +36,8 @@ class BucketQueue {
 
   /// Empties the queue and sets the bucket width (> 0, finite) and how many buckets the ring
   /// holds (rounded up to a power of two in [kMinRing, kMaxRing]; farther keys wait in the
-  /// overflow). A small mesh needs few: allocating and filling 4096 buckets was 7% of a fuzz
-  /// input's time on a two-face mesh.
+  /// overflow). A small mesh needs few: allocating and filling 4096 buckets would be 7% of a
+  /// fuzz input's time on a two-face mesh.
   void reset(double width, std::size_t ringBuckets = kMaxRing) {
     GEODEX_REQUIRE(width > 0.0 && std::isfinite(width), "queue bucket width " << width);
     const std::uint64_t ring = std::bit_ceil(std::clamp<std::uint64_t>(ringBuckets, kMinRing, kMaxRing));
@@ -184,7 +184,7 @@ class BucketQueue {
   std::vector<Entry> overflow_;
   std::uint64_t overflowFirst_ = kNever;  ///< the smallest bucket in the overflow
   double width_ = 1.0;
-  double perWidth_ = 1.0;  ///< 1 / width_ (a division per push was a tenth of pushing)
+  double perWidth_ = 1.0;  ///< 1 / width_ (a division would be a tenth of a push)
   std::uint64_t current_ = 0;
   std::size_t size_ = 0;
 };

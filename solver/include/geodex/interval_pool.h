@@ -1,8 +1,8 @@
 #pragma once
 // Where a solver's interval lists live. The lists are most of its memory (30 million intervals,
 // 1.45 GB, on the 871K-face dragon) and grow one interval at a time as the wavefront crosses
-// their edge; through malloc every growth was an allocation, a copy and a free, about 8% of a
-// solve. Here blocks come in size classes a quarter apart, carved from large chunks and reused
+// their edge; through malloc every growth would be an allocation, a copy and a free, about 8% of
+// a solve. Here blocks come in size classes a quarter apart, carved from large chunks and reused
 // through a free list per class: the wavefront frees a small block on one edge as it needs one on
 // the next, so the free lists stay short.
 //
@@ -48,8 +48,8 @@ class IntervalPool {
     std::size_t capacity;  // intervals
   };
   // A freed block holds the next free block of its class in its first bytes: freeing allocates
-  // nothing (a vector per class did, at every growth of every list and again when a solver's lists
-  // go: 28 allocations per fuzz_solver input).
+  // nothing (a vector per class would allocate at every growth of every list and again when a
+  // solver's lists go).
   struct FreeBlock {
     FreeBlock* next;
   };

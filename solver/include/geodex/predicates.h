@@ -38,10 +38,10 @@ inline Side sideOfRay(const Vec2& a, const Vec2& b, const Vec2& c) {
 /// rule that out before asking).
 /// Measured from q (a point of the window, near the face) and from the end of the segment nearer
 /// the crossing: from s or from the far end, the cross product is of long vectors and cancels
-/// down to their rounding, which a grazing ray divides by its small angle. Measured from a, a
-/// crossing 7.6e-4 from b on a 6.7e7-long edge came out 0.03 off, past b, and the window's whole
-/// image on that edge was lost (corpus/fuzz_propagation/regress/coverage-crossing-near-v2-of-a-
-/// long-edge-measured-from-its-far-end).
+/// down to their rounding, which a grazing ray divides by its small angle: measured from a, a
+/// crossing near b on a long edge can land past b, and the window's whole image on that edge is
+/// lost (corpus/fuzz_propagation/regress/coverage-crossing-near-v2-of-a-long-edge-measured-from-
+/// its-far-end).
 inline double rayHitsSegment(const Vec2& s, const Vec2& q, const Vec2& a, const Vec2& b) {
   const Vec2 d = q - s;
   const double denom = cross(b - a, d);

@@ -84,8 +84,8 @@ LocalWindow atUnitScale(const LocalWindow& w);
 
 /// Whether the children of a propagation across this face lie on one line with e0: the apex is
 /// within kFlatFaceRel of e0's line, relative to max(L, |v1|). (Relative to the two edges at v0,
-/// not to localScale as propagateLocal's zero-area branch: the solver has always decided it so,
-/// and childInterval keeps that decision bit for bit.)
+/// not to localScale as propagateLocal's zero-area branch is: the two are separate decisions,
+/// and making them one would change the solver's results, not only its code.)
 bool childEdgesOnOneLine(const LocalWindow& w);
 
 /// The mesh edge a LocalChild lies on: e1 (v0→v1) or e2 (v1→v2) of the local frame.

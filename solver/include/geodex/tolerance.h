@@ -30,29 +30,28 @@ inline constexpr double kFlatFaceRel = 1e-12;
 ///     are sewn (sewLength in edge_intervals.h). That covers a flat vertex's shadow: the two
 ///     sides' boundary rays both pass through the vertex and differ in direction by its angle
 ///     defect (below kFlatVertexAngle), so the gap is that × the distance past the vertex, a
-///     local length. Neither σ nor the source's distance counts: sewing up to kFlatVertexAngle ×
-///     σ + the rays' length once gave a window a stretch 0.0094 long on an edge 7.9e6 from its
-///     source with σ = 3.2e12, where the neighbour was 1.6e6 shorter (fuzz_edge_update), and
-///     sewing up to this × a far source's distance closed a near saddle's shadow (sewLength).
+///     local length. Neither σ nor the source's distance counts: a slack growing with σ hands a
+///     far window a stretch where its neighbour is much shorter, and one growing with a far
+///     source's distance closes a near saddle's shadow (sewLength).
 /// The length scale of an interval is max(edge length, distance from its pseudo-source to the
 /// edge): its ends come from rays cast from that source, so they carry rounding of ~1e-16 × that
 /// distance. (A window from a source 1e5 edge lengths away has ends good to ~1e-11 × the edge
-/// only; measured on tests/unit/geodesic_solver_test.cpp's far-source patch.) See
+/// only, as on tests/unit/geodesic_solver_test.cpp's far-source patch.) See
 /// intervalLengthScale() in edge_intervals.h.
 /// D2: overlaps below this × the length scale are resolved where the shorter of the two ends
 ///     (at the midpoint where they agree); larger ones are split by Eq. 1.
 inline constexpr double kTinyIntervalRel = 1e-11;
 
 /// D1 beside a coarser neighbour: a window's ends, cast by rays from its pseudo-source, are good
-/// to this × its length scale (measured ~1e-16 × the source distance; 100× that). A sliver of a
-/// near window at the end of a far one that is shorter than this × the far one's scale may be
-/// the far end's rounding and is removed (D1) even when longer than its own ε: one 2.4e-11 long,
-/// left where a window from a source 5.3e5 away stopped short of a vertex it reaches, stood 0.41
-/// above it (tests/data/regression/rotated-far-source-patch-sliver-at-a-rounded-window-end.off).
+/// to this × its length scale (their rounding is ~1e-16 × the source distance; 100× that). A
+/// sliver of a near window at the end of a far one that is shorter than this × the far one's
+/// scale may be the far end's rounding and is removed (D1) even when longer than its own ε: left,
+/// it stands above the far window, which really reaches on to the vertex
+/// (tests/data/regression/rotated-far-source-patch-sliver-at-a-rounded-window-end.off).
 /// Not the neighbour's whole ε (kTinyIntervalRel, 1e5× the rounding): a sliver that long is real,
-/// the start of a near saddle's shadow that fans out downstream where the far rays never reach
-/// (tests/data/regression/far-source-edge-end-left-to-a-pseudo-source.off: merged into the far
-/// window, a 1.09e-6 sliver lost vertex 1's fan and the next edge took 0.41 too much).
+/// the start of a near saddle's shadow that fans out downstream where the far rays never reach;
+/// merged into the far window, it takes the saddle's fan with it
+/// (tests/data/regression/far-source-edge-end-left-to-a-pseudo-source.off).
 inline constexpr double kRayEndRel = 1e-14;
 
 /// A vertex whose height over the opposite edge of one of its faces is below this × that face's
@@ -60,7 +59,7 @@ inline constexpr double kRayEndRel = 1e-14;
 /// at most a D1 sliver (kTinyIntervalRel) beside the direct windows through the face, so its fan
 /// into the face across the edge is seeded directly (GeodesicSolver::seedAcrossVertexOnEdge).
 /// Four times kTinyIntervalRel: the sliver's width is about the height, up to the unfolding's
-/// rounding; measured, a vertex lifted 5e-12 off the edge lost its fan as one exactly on it did.
+/// rounding, so a vertex lifted 5e-12 off the edge loses its fan just as one exactly on it does.
 inline constexpr double kVertexOnEdgeRel = 4.0 * kTinyIntervalRel;
 
 /// Step 5: two neighbouring intervals have the same pseudo-source when the unfolded sources are
@@ -74,17 +73,17 @@ inline constexpr double kSameSourceRel = 1e-11;
 /// two sides' rays then diverge: past a flat vertex, past a near-flat saddle of a CAD mesh whose
 /// coordinates were rounded (anchor_dense.off has 88 vertices 1e-11 .. 1e-10 off 2π,
 /// mannequin-devil.off 180 vertices 1e-9 .. 1e-7 off), between two unfoldings of one
-/// pseudo-source, along a saddle's shadow boundary. Measured: gaps of 1.8e-11, 3.5e-11, 1.1e-10,
-/// 3.9e-10 and 1.1e-9 of the distance (anchor_dense, rotor_small, mannequin-devil).
-/// The width is the accuracy contract itself (1e-9 × the diagonal, issue 2): a point x of a gap
+/// pseudo-source, along a saddle's shadow boundary. On anchor_dense, rotor_small and
+/// mannequin-devil such gaps are 1e-11 to ~1e-9 of the distance.
+/// The width is the accuracy contract itself (1e-9 × the diagonal): a point x of a gap
 /// [a, b] closed at its midpoint m takes a neighbour's value f(x), and f and the true distance are
 /// both 1-Lipschitz along the edge with f(a) the true distance at a, so |f(x) − true(x)| <=
 /// 2 (x − a) <= b − a. (The scale is the contract's, not a local length: what bounds the error is
 /// the gap's absolute width.)
 /// Not mid-run, where Algorithm 2 step 4 sews only below ε (kTinyIntervalRel, kFlatVertexAngle):
 /// there a gap may be the start of a saddle's shadow, which widens downstream; closing it with
-/// the direct windows (a tie the saddle's window then cannot break) left the saddle's window out
-/// and the shadow open further on (fandisk.off).
+/// the direct windows (a tie the saddle's window then cannot break) leaves the saddle's window
+/// out and the shadow open further on (fandisk.off).
 inline constexpr double kShadowSewRel = 1e-9;
 
 /// D4: the distances of two neighbours at their shared endpoint must agree to this × the
@@ -97,16 +96,16 @@ inline constexpr double kContinuityRel = 1e-10;
 /// to this × (distance + edge length); otherwise the change is located by bisection (D4). Below
 /// kContinuityRel by what step 5 may still change either function by when it merges it with a
 /// near-equal source (kSameSourceRel for the source, kSameSourceRel for σ): a root accepted at
-/// the edge of kContinuityRel failed the continuity check once its neighbour was merged
+/// the edge of kContinuityRel fails the continuity check once its neighbour is merged
 /// (corpus/fuzz_edge_update/regress/continuous-at-eq1-root-accepted-then-neighbour-merged).
 inline constexpr double kEq1RootRel = kContinuityRel - 2.0 * kSameSourceRel;
 
 /// Algorithm 2 re-propagates an interval that grew over an unpropagated sliver (D1) or half a
 /// sewn gap (D3) at most this many times. Each regrowth is below ε, and so are the children it
 /// adds; without a cap two propagated intervals on neighbouring edges can hand each other such a
-/// sliver forever (a 38-face planar mesh ran for minutes: corpus/fuzz_solver/regress/
-/// internal-check-two-edges-regrow-each-other-forever). Past the cap the sliver is absorbed
-/// without a second propagation, and the sub-ε gap it leaves further on is step 4's.
+/// sliver forever (corpus/fuzz_solver/regress/internal-check-two-edges-regrow-each-other-forever).
+/// Past the cap the sliver is absorbed without a second propagation, and the sub-ε gap it leaves
+/// further on is step 4's.
 inline constexpr int kMaxRegrowths = 4;
 
 /// A new interval replaces an old one only where it is shorter by more than this × the distance
@@ -153,8 +152,8 @@ inline constexpr double kMaxSourceDistanceInFaceSizes = 3e10 / kMinEdgeLengthRel
 /// edge or vertex it is on. Ten times kCoincideRel: a source nearer a vertex or an edge than
 /// that is neither coincident with it for the Fig. 6 predicates nor clear of it — its windows
 /// see it a hair off their edge's line beside the window's end, where G1 ("s on e0's line")
-/// and the generic branches disagree. A face source 2.2e-11 from a flat grid vertex (snapped at
-/// 1e-12: it was not) lost its windows into the faces around that vertex that way
+/// and the generic branches disagree, and a face source that close to a flat grid vertex loses
+/// its windows into the faces around the vertex unless it is snapped onto it
 /// (corpus/fuzz_solver/regress/upper-bound-face-source-2e-11-from-flat-vertex). Moving a
 /// source by 1e-10 of its face moves every distance by at most that, far inside the 1e-9 ×
 /// diagonal contract.
@@ -192,13 +191,13 @@ inline constexpr double kPointwiseMinRel = kContinuityRel + 2.0 * kTinyIntervalR
 /// the vertex, since D(v) is the smallest value any incident edge gives at v:
 ///  - the rounding of positions along it: along an edge of length L positions are known to
 ///    ulp(L) ≈ 1e-16 × L only (an unfolded source near the far end of a 1e6-long edge is 1.2e-10
-///    off). Measured: 1.3e-10 on a planar mesh with 1e6-long thin triangles
-///    (tests/property/regressions_test.cpp, case 3); kRoundingRel × 1e6 = 1e-8 covers it.
+///    off); kRoundingRel × 1e6 = 1e-8 covers a planar mesh with 1e6-long thin triangles
+///    (tests/property/regressions_test.cpp, case 3).
 ///  - its own contract: a long edge holds its distance function to kPointwiseMinRel × (d + L) of
-///    the exact minimum (its D1–D3 ε is kTinyIntervalRel × L), so D(v) taken from a 241522-long
-///    edge sat 1.3e-7 below what the three short edges at v agreed on
-///    (tests/data/regression/refined-far-source-patch-vertex-agreement.off, found by
-///    scripts/properties-long.sh): within that edge's contract and the 1e-9 × diagonal target.
+///    the exact minimum (its D1–D3 ε is kTinyIntervalRel × L), so D(v) taken from a long edge
+///    may sit that far below what the short edges at v agree on, within that edge's contract and
+///    the 1e-9 × diagonal target
+///    (tests/data/regression/refined-far-source-patch-vertex-agreement.off).
 inline double vertexAgreementTolerance(double distance, double edgeLength, double longestIncidentEdge) {
   return kContinuityRel * (distance + edgeLength) +
          (kRoundingRel + kPointwiseMinRel) * longestIncidentEdge;
