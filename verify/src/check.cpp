@@ -17,7 +17,7 @@ namespace {
 
 // ===  Tolerances of the oracles (relative, and why) ============================================
 // Distances agree with an independent exact answer to this × the bounding-box diagonal: the
-// acceptance figure of the planar oracles (issue 2). Metamorphic re-solves use it too: a rigid
+// solver's accuracy contract (docs/properties.md). Metamorphic re-solves use it too: a rigid
 // motion or a scale changes rounding, which may flip an ε decision, moving a distance by O(ε).
 constexpr double kAgreeRel = 1e-9;
 // Bounds (Euclidean, Dijkstra, Lipschitz) hold exactly in real arithmetic; allow rounding only.

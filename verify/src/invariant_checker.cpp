@@ -241,9 +241,8 @@ namespace {
 
 // Each function counts where it covers x up to the slack step 4 may sew (ε): a sewn end is
 // part of the repaired list by contract.
-// Step 4 sews up to sewLength, which can exceed ε by the ray-end precision (a 49-long edge's
-// end gap of 4.9000000049e-10 was sewn against an ε of 4.9e-10:
-// corpus/fuzz_edge_update/regress/pointwise-min-end-gap-sewn-up-to-the-ray-end-precision).
+// Step 4 sews up to sewLength, which exceeds ε by the ray-end precision
+// (corpus/fuzz_edge_update/regress/pointwise-min-end-gap-sewn-up-to-the-ray-end-precision).
 // The slack is the largest ε of the intervals step 4 could sew with: it sews a gap below the ε
 // of either interval beside it, so a near window's end is carried across a gap as wide as a
 // far neighbour's ε (corpus/fuzz_edge_update/regress/pointwise-min-gap-sewn-by-the-far-neighbours-epsilon).
@@ -285,7 +284,7 @@ std::span<const double> InvariantChecker::pointwiseMinSamples(const EdgeUpdateEv
   }
   // Inside every piece between consecutive endpoints of the three lists: a D2 overlap or a D1
   // sliver is far shorter than the uniform spacing, and which function wins there is what
-  // steps 1–4 decide (an overlap handed to the longer side went unseen otherwise).
+  // steps 1–4 decide (otherwise an overlap handed to the longer side goes unseen).
   std::vector<double>& ends = ends_;
   ends.assign({e.incoming.b0, e.incoming.b1});
   for (const Interval& w : beforeNear) ends.insert(ends.end(), {w.b0, w.b1});
@@ -327,10 +326,9 @@ PointwiseMinError worstPointwiseMinError(const EdgeUpdateEvent& e, std::span<con
   // 1-Lipschitz, the list there is above the functions really present by less than the slack and
   // twice the stretch grown over (`reach`): 2 reach + 4 slack bounds it. More is a sliver's
   // distance lost (corpus/fuzz_solver/regress/vertex-agreement-d1-pieces-of-a-source-near-a-
-  // corner-merged-into-a-far-g1-window: 0.13 inside 3.2e-12 slivers, a range this check used to
-  // skip). Below them it may be by more: a neighbour takes slivers one after another (under a far
-  // window's ray-end precision, six of them and 2.6e-9 in the fuzz_edge_update smoke), which is
-  // D1's own premise; the solve's lower-bound oracles watch that.
+  // corner-merged-into-a-far-g1-window). Below them it may be by more: a neighbour takes slivers
+  // one after another (under a far window's ray-end precision), which is D1's own premise; the
+  // solve's lower-bound oracles watch that.
   auto removedSliverReach = [&](double x) {
     double reach = 0.0;
     for (const auto& [lo, hi] : e.report.removedTiny)
