@@ -4,12 +4,12 @@ code) and VTP (Qin et al. 2016), built as command-line drivers by ../shared/anch
 
   bench/anchors.py [--geodex BIN] [--anchors DIR] [--meshes DIR] [--big] [--reps N] [--only a,b]
 
-Single vertex source v:0 on each mesh of issue 13's table: propagation time (each tool's own timer
-around the solve only; median of N runs, each in a fresh process) and the whole process's peak
-memory (the largest over the runs, from wait4), and how far each reference is from geodex
-(max |d - geodex| / the largest distance, over the vertices both reach). Without --anchors, or
-where a driver is missing or fails, its columns read "–" and nothing fails. Prints a Markdown
-table; exit 2 only for bad usage or a geodex failure.
+Single vertex source v:0 on each mesh of the table in docs/benchmarks.md: propagation time (each
+tool's own timer around the solve only; median of N runs, each in a fresh process) and the whole
+process's peak memory (the largest over the runs, from wait4), and how far each reference is from
+geodex (max |d - geodex| / the largest distance, over the vertices both reach). Without
+--anchors, or where a driver is missing or fails, its columns read "–" and nothing fails. Prints
+a Markdown table; exit 2 only for bad usage or a geodex failure.
 """
 import argparse
 import math

@@ -208,7 +208,8 @@ class NoopObserver final : public SolverObserver {};
 
 // === The cases ===================================================================================
 
-/// Kirsanov's MMP on this machine, from project issue 6, and the target ratio for geodex.
+/// Kirsanov's MMP on this machine and the target ratio for geodex (the reference figures of
+/// docs/benchmarks.md).
 struct Reference {
   double kirsanovRatio;    ///< CGAL Epick time / Kirsanov MMP time
   double kirsanovSeconds;

@@ -1,4 +1,4 @@
-// What the observer hooks cost a release solve with no observer attached (issue 3: at most 2%).
+// What the observer hooks cost a release solve with no observer attached (the budget: 2%).
 // Built twice from this file: geodex_hooks_timing against the library as shipped and
 // geodex_nohooks_timing against the same sources compiled with GEODEX_NO_OBSERVER_HOOKS (the
 // hooks gone). scripts/hooks-overhead.sh runs the two alternately and compares their medians.
