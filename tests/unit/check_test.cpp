@@ -46,6 +46,18 @@ TEST(CheckOracles, PlanarIgnoresAnUnreferencedVertexOutsideTheDomain) {
   EXPECT_EQ(r.failed, 0u);
 }
 
+// A source on a vertex no face uses is at distance 0 from itself and reaches nothing: every
+// oracle of `geodex check` must agree with the solver there, not take the 0 for a wrong distance.
+TEST(CheckOracles, ASourceOnAnUnreferencedVertexPassesEveryOracle) {
+  TriangleSoup soup = lShapeMesh(4, 1.0);
+  soup.positions.push_back(Vec3(0.5, 0.5, 3.0));
+  const Index isolated = static_cast<Index>(soup.positions.size() - 1);
+  const Mesh mesh(soup);
+  const CheckResult r = runChecks(mesh, {SurfacePoint::atVertex(isolated)}, CheckOptions{});
+  EXPECT_TRUE(r.ok()) << r.violations.front();
+  for (const OracleResult& o : r.oracles) EXPECT_EQ(o.failed, 0u) << o.name << ": " << o.firstFailure;
+}
+
 TEST(CheckOracles, MetamorphicFailsOnAPerturbedField) {
   Solved s(icosphereMesh(1, 1.0), {SurfacePoint::inFace(3, 0.2, 0.3, 0.5)});
   EXPECT_EQ(metamorphicOracle(s.mesh, s.sources, s.d).failed, 0u);

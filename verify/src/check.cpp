@@ -281,6 +281,11 @@ void planarInto(OracleResult& r, const Mesh& mesh, const std::vector<SurfacePoin
   }
   std::vector<double> exact(d.size(), INFINITY);
   for (const SurfacePoint& s : sources) {
+    // A source on a vertex no face uses is not in the domain: 0 there, and it reaches nothing.
+    if (s.kind == SurfacePoint::Kind::Vertex && !mesh.isReferenced(s.vertex)) {
+      exact[s.vertex] = 0.0;
+      continue;
+    }
     const Vec3 p = surfacePointPosition(flat, s);
     const auto one = planarDomainDistances(boundary, Vec2(p.x(), p.y()), queries);
     for (std::size_t k = 0; k < referenced.size(); ++k)

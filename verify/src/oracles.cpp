@@ -238,10 +238,6 @@ std::vector<double> edgeGraphDijkstra(const TriangleSoup& soup,
       adjacent[fill[b]++] = {a, length};
     }
   }
-  std::vector<std::uint8_t> referenced(n, 0);
-  for (const auto& f : soup.faces)
-    for (Index v : f) referenced[v] = 1;
-
   std::vector<double> d(n, kInf);
   using Entry = std::pair<double, Index>;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue;
@@ -249,7 +245,9 @@ std::vector<double> edgeGraphDijkstra(const TriangleSoup& soup,
     requireVertex(soup, v, "edgeGraphDijkstra");
     require(std::isfinite(d0) && d0 >= 0.0,
             "edgeGraphDijkstra: initial distance must be finite and >= 0");
-    if (referenced[v] && d0 < d[v]) {
+    // A source on a vertex no face uses is a point at distance 0 from itself, as the solver
+    // has it; with no edge, it reaches nothing else.
+    if (d0 < d[v]) {
       d[v] = d0;
       queue.emplace(d0, v);
     }
