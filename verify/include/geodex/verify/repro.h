@@ -67,105 +67,20 @@
 #include "geodex/mesh.h"
 #include "geodex/propagate.h"
 #include "geodex/surface_point.h"
+#include "geodex/verify/cases/byte_codec.h"
+#include "geodex/verify/cases/fuzz_target.h"
 
 namespace geodex::verify {
-
-// === Targets ===================================================================================
-
-enum class FuzzTarget : std::uint8_t { MeshIo, Predicates, EdgeUpdate, Propagation, TwoFaces, Solver };
-inline constexpr std::array<FuzzTarget, 6> kFuzzTargets{
-    FuzzTarget::MeshIo,      FuzzTarget::Predicates, FuzzTarget::EdgeUpdate,
-    FuzzTarget::Propagation, FuzzTarget::TwoFaces,   FuzzTarget::Solver};
-
-/// "fuzz_mesh_io", "fuzz_predicates", "fuzz_edge_update", "fuzz_propagation", "fuzz_two_faces",
-/// "fuzz_solver".
-std::string_view name(FuzzTarget t);
-/// Accepts the full name or the part after "fuzz_" ("solver"); nullopt otherwise.
-std::optional<FuzzTarget> parseFuzzTarget(std::string_view s);
 
 // === Work caps =================================================================================
 // The fuzzing budget: the library has no fuzzing switch; the decoders cap what a case may ask for.
 
-inline constexpr std::size_t kMaxFuzzInputBytes = 4096;        ///< binary targets
 inline constexpr std::size_t kMaxMeshIoInputBytes = 1u << 16;  ///< fuzz_mesh_io
 inline constexpr int kMaxFuzzFaces = 64;          ///< fuzz_solver meshes
 inline constexpr int kMaxFuzzGridCells = 32;      ///< fuzz_solver grids: 2 faces per cell
 inline constexpr int kMaxFuzzSoupPoints = 24;     ///< fuzz_solver lattice soups
 inline constexpr int kMaxFuzzSources = 3;
 inline constexpr int kMaxFuzzOldIntervals = 8;    ///< fuzz_edge_update list before the update
-
-// === Byte primitives ===========================================================================
-// Reading past the end gives zeros (like FuzzedDataProvider), so every prefix of a valid input is
-// a valid input. All multi-byte values are little-endian.
-
-/// Which tolerance a nudge is a multiple of (tolerance.h).
-enum class Nudge : std::uint8_t {
-  Coincide,         ///< tol::kCoincideRel
-  Collinear,        ///< tol::kCollinearSin
-  TinyInterval,     ///< tol::kTinyIntervalRel
-  FlatFace,         ///< tol::kFlatFaceRel
-  SnapParam,        ///< tol::kSnapParam
-  FlatVertexAngle,  ///< tol::kFlatVertexAngle
-  SameSource,       ///< tol::kSameSourceRel
-  Continuity,       ///< tol::kContinuityRel
-};
-double toleranceOf(Nudge n);
-
-/// One number of a case: a lattice value, or a raw double, times 8^exponent, plus a nudge of a
-/// few multiples of a tolerance. 4 bytes on the wire (int16 n, int8 nudge, uint8 flags), 12
-/// with a raw double. Each field of a case says which lattice range n is wrapped into, what the
-/// lattice unit is, and what length the nudge's tolerance is relative to.
-///
-///   flags bits 0–2  the Nudge kind           bit 3  fine: the nudge is in 1/16 steps
-///         bits 4–6  exponent e (× 8^e)       bit 7  a raw double follows (replaces n)
-struct Quantity {
-  std::int16_t n = 0;
-  std::int8_t nudge = 0;
-  std::uint8_t flags = 0;
-  double raw = 0.0;
-
-  // Builders for readable seeds (fuzz/make_seeds.cpp).
-  static Quantity lattice(int n);
-  /// A raw value in lattice units (clamped to the field's range × 8^e when decoded).
-  static Quantity exact(double value);
-  /// Adds k (k/16 when fine) multiples of the tolerance t × the field's length scale.
-  Quantity nudged(int k, Nudge t, bool fine = false) const;
-  Quantity times8(int e) const;
-
-  bool isRaw() const { return (flags & 0x80) != 0; }
-  bool fine() const { return (flags & 0x08) != 0; }
-  int exponent() const { return (flags >> 4) & 7; }
-  Nudge nudgeKind() const { return static_cast<Nudge>(flags & 7); }
-};
-
-class ByteReader {
- public:
-  explicit ByteReader(std::span<const std::uint8_t> bytes) : bytes_(bytes) {}
-  std::uint8_t u8() { return pos_ < bytes_.size() ? bytes_[pos_++] : 0; }
-  std::int8_t i8() { return static_cast<std::int8_t>(u8()); }
-  std::int16_t i16();
-  /// A raw double; non-finite values read as 0.
-  double f64();
-  Quantity quantity();
-  bool atEnd() const { return pos_ >= bytes_.size(); }
-
- private:
-  std::span<const std::uint8_t> bytes_;
-  std::size_t pos_ = 0;
-};
-
-class ByteWriter {
- public:
-  void u8(std::uint8_t v) { bytes_.push_back(v); }
-  void i8(std::int8_t v) { bytes_.push_back(static_cast<std::uint8_t>(v)); }
-  void i16(std::int16_t v);
-  void f64(double v);
-  void quantity(const Quantity& q);
-  const std::vector<std::uint8_t>& bytes() const { return bytes_; }
-
- private:
-  std::vector<std::uint8_t> bytes_;
-};
 
 // === Specs: a case as its bytes describe it ====================================================
 // Each target's input is one spec, written field by field in the order below. The world's
@@ -329,23 +244,6 @@ EdgeUpdateCase parseEdgeUpdateReproducer(std::string_view text);
 bool isEdgeUpdateReproducer(std::span<const std::uint8_t> bytes);
 
 // === Checks ====================================================================================
-
-struct Verdict {
-  /// The bytes decoded into a case (false: skipped, which is a pass).
-  bool interesting = false;
-  /// Empty when every check passed; else the name of the first broken check: an invariant of
-  /// InvariantChecker ("pointwise-min", …), an oracle ("euclidean-lower-bound", "upper-bound",
-  /// "lipschitz", "planar-agreement", "two-face-distance", "unfolding", "path-length",
-  /// "stop-distance", "symmetry", "edge-query"), "exact-predicates", "child-range", "coverage",
-  /// "soundness", "invented-source", "ids", "unexpected-exception", "validated-mesh-refused",
-  /// "round-trip", "mesh-geometry", "internal-check".
-  std::string failed;
-  std::string message;  ///< what broke, with the numbers
-  std::string summary;  ///< one line on what the case exercised
-  /// G1–G5 (Fig. 6 branches) and D1–D4 (Algorithm 2 reports) the case hit.
-  DegeneracyCounters degeneracies;
-  bool ok() const { return failed.empty(); }
-};
 
 /// Runs the target's checks on a decoded case, every one of them, the fuzz targets too: the full
 /// invariant tier costs fuzz_solver 2.9x the cheap tier's time and buys the pointwise minimum at
