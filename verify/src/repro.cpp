@@ -24,7 +24,15 @@
 #include "geodex/verify/invariant_checker.h"
 #include "geodex/verify/oracles.h"
 
+#include "cases/check_support.h"
+#include "cases/fig6_exact.h"
+#include "cases/local_window.h"
+#include "cases/mesh_case.h"
+#include "cases/svg.h"
+
 namespace geodex::verify {
+
+using namespace detail;
 
 // ===  Targets ===================================================================================
 
@@ -49,35 +57,6 @@ std::optional<FuzzTarget> parseFuzzTarget(std::string_view s) {
 }
 
 namespace {
-
-// ===  Field values ==============================================================================
-
-/// Whether x × k (k a power of two) is exact: x is zero, or x and the product are normal numbers.
-bool scalesExactly(double x, double k) { return x == 0.0 || (std::isnormal(x) && std::isnormal(x * k)); }
-
-/// Whether the Fig. 6 tree must decide w and its unit-scale copy u (atUnitScale) bit for bit
-/// alike: every value scales exactly, and each is zero or within 2^±100 of the face's size, so
-/// that no product of four of them (sideOfRay) leaves the normal range at either scale. (A window
-/// 1e-300 of its edge wide is far below what the solver keeps, D1; its crossings then round in
-/// the subnormal range, differently at each scale.)
-bool decidedAlikeAtUnitScale(const LocalWindow& w, const LocalWindow& u) {
-  const double k = u.edgeLength / w.edgeLength;  // a power of two
-  for (double x : {w.edgeLength, w.apex.x(), w.apex.y(), w.b0, w.b1, w.source.x(), w.source.y()}) {
-    if (!scalesExactly(x, k)) return false;
-    if (x != 0.0 && !(std::abs(x * k) >= 0x1p-100 && std::abs(x * k) <= 0x1p100)) return false;
-  }
-  return true;
-}
-
-/// Whether two runs of the Fig. 6 tree ended alike, bit for bit: the leaf and every child.
-bool sameDecision(const LocalPropagation& a, const LocalPropagation& b) {
-  if (a.branch != b.branch || a.numChildren != b.numChildren) return false;
-  for (int i = 0; i < a.numChildren; ++i)
-    if (a.children[i].edge != b.children[i].edge || a.children[i].t0 != b.children[i].t0 ||
-        a.children[i].t1 != b.children[i].t1)
-      return false;
-  return true;
-}
 
 // ===  Specs: reading and writing ================================================================
 
@@ -124,26 +103,6 @@ EdgeUpdateSpec readEdgeUpdateSpec(ByteReader& r) {
   for (int i = 0; i < count; ++i) s.before.push_back(readIntervalSpec(r));
   s.incoming = readIntervalSpec(r);
   return s;
-}
-
-SourceSpec readSourceSpec(ByteReader& r) {
-  SourceSpec s;
-  s.kind = r.u8();
-  s.element = r.u8();
-  s.corner = r.u8();
-  s.t = r.quantity();
-  s.a = r.quantity();
-  s.b = r.quantity();
-  return s;
-}
-
-void writeSourceSpec(ByteWriter& w, const SourceSpec& s) {
-  w.u8(s.kind);
-  w.u8(s.element);
-  w.u8(s.corner);
-  w.quantity(s.t);
-  w.quantity(s.a);
-  w.quantity(s.b);
 }
 
 PropagationSpec readPropagationSpec(ByteReader& r) {
@@ -366,41 +325,6 @@ std::optional<EdgeUpdateCase> makeEdgeUpdateCase(const EdgeUpdateSpec& s) {
   std::string why;
   if (!InvariantChecker::checkList(c.before, L, why).empty()) return std::nullopt;
   return c;
-}
-
-SurfacePoint makeSource(const SourceSpec& s, const TriangleSoup& soup) {
-  const auto nf = soup.faces.size();
-  const auto& face = soup.faces[s.element % nf];
-  switch (s.kind % 3) {
-    case 0: {
-      Index v = static_cast<Index>(s.element % soup.positions.size());
-      bool referenced = false;
-      for (const auto& f : soup.faces)
-        if (f[0] == v || f[1] == v || f[2] == v) referenced = true;
-      if (!referenced) v = face[s.corner % 3];
-      return SurfacePoint::atVertex(v);
-    }
-    case 1: {
-      const int k = s.corner % 3;
-      const double t = std::clamp(fieldValue(s.t, 0, 16, 1.0 / 16.0, 1.0), 0.0, 1.0);
-      return SurfacePoint::onEdge(face[k], face[(k + 1) % 3], t);
-    }
-    default: {
-      double a = std::clamp(fieldValue(s.a, 0, 16, 1.0 / 16.0, 1.0), 0.0, 1.0);
-      double b = std::clamp(fieldValue(s.b, 0, 16, 1.0 / 16.0, 1.0), 0.0, 1.0);
-      if (a + b > 1.0) a = 1.0 - a, b = 1.0 - b;
-      const double c = std::max(0.0, 1.0 - a - b);
-      return SurfacePoint::inFace(s.element % nf, a, b, c);
-    }
-  }
-}
-
-bool soupValid(const TriangleSoup& soup) {
-  std::vector<MeshIssue> issues;
-  validateMesh(soup, issues);
-  for (const MeshIssue& i : issues)
-    if (i.severity == Severity::Error) return false;
-  return true;
 }
 
 /// A face the solver computes with: each edge's length, in the face's own mesh units, passes
@@ -680,354 +604,7 @@ std::optional<FuzzCase> decode(FuzzTarget t, std::span<const std::uint8_t> bytes
   return std::nullopt;
 }
 
-// ===  Checks: shared ============================================================================
-
-namespace {
-
-Verdict& fail(Verdict& v, std::string check, std::string message) {
-  if (v.failed.empty()) {
-    v.failed = std::move(check);
-    v.message = std::move(message);
-  }
-  return v;
-}
-
-std::string fmt(double x) {
-  std::ostringstream os;
-  os << std::setprecision(17) << x;
-  return os.str();
-}
-
-std::string describeInterval(const Interval& w) {
-  std::ostringstream os;
-  os << std::setprecision(17) << "[" << w.b0 << ", " << w.b1 << "] s=(" << w.source.x() << ", "
-     << w.source.y() << ") sigma=" << w.sigma << " side=" << int(w.side);
-  if (w.fullyPropagated()) os << " propagated";
-  return os.str();
-}
-
-double cross2(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
-
-/// |sin| of the angle between a and b, or 2 when they point apart (or one is zero).
-double sinAngle(const Vec2& a, const Vec2& b) {
-  const double na = a.norm(), nb = b.norm();
-  if (na == 0.0 || nb == 0.0 || a.dot(b) <= 0.0) return 2.0;
-  return std::abs(cross2(a, b)) / (na * nb);
-}
-
-// ===  fuzz_predicates: the Fig. 6 tree evaluated exactly ========================================
-// Every predicate of propagateLocal has the form "q ≤ k · √S2" (q and S2 rational in the inputs,
-// k a tolerance). Evaluated on GMP rationals from the exact double inputs, it is *clearly* true
-// when q ≤ k√S2 / 10 and clearly false when q ≥ 11 k√S2 (10× the tolerance beyond the boundary);
-// in between the ε-decision may go either way and the case says nothing about the predicates.
-
-using Rat = mpq_class;
-enum class Tri { True, False, Near };
-
-Tri decideLeq(const Rat& q, double k, const Rat& S2) {
-  const Rat kk(k);
-  auto leq = [&](const Rat& m) {  // q ≤ m·k·√S2, with m·k ≥ 0
-    if (sgn(q) <= 0) return true;
-    return q * q <= m * m * kk * kk * S2;
-  };
-  if (leq(Rat(1, 10))) return Tri::True;
-  if (!leq(Rat(11))) return Tri::False;
-  return Tri::Near;
-}
-
-Rat absRat(const Rat& x) { return sgn(x) < 0 ? Rat(-x) : x; }
-
-struct ExactFig6 {
-  std::optional<Fig6Branch> branch;  ///< nullopt: a predicate on the path is near its boundary
-  std::string nearWhat;
-};
-
-// The same tree first in doubles, as a filter (CGAL's filtered predicates): each value with a
-// bound on its rounding error, generous (several times Higham's γ_n for the few operations per
-// value). Where every predicate on the path is certain — the value clearly on one side of both
-// band edges, or clearly inside the band — that is the exact decision; otherwise nullopt and the
-// rational evaluation decides. Inputs outside [1e-50, 1e50] (or 0) go to the rationals, so no
-// product here under- or overflows. Under ASan, GMP's allocations were three quarters of
-// fuzz_propagation's time; the filter leaves them to the few cases near a band edge.
-Tri filteredLeq(double q, double qError, double k, double S2, double S2RelError, bool& certain) {
-  constexpr double kSlack = 1e-14;  // the rounding of the thresholds themselves, generously
-  const double rootLo = std::sqrt(S2 * (1.0 - S2RelError)) * (1.0 - kSlack);
-  const double rootHi = std::sqrt(S2 * (1.0 + S2RelError)) * (1.0 + kSlack);
-  // Exactly: True when q ≤ k√S2 / 10, False when q ≥ 11 k√S2, Near in between.
-  if (q + qError <= 0.1 * k * rootLo * (1.0 - kSlack)) return Tri::True;
-  if (q - qError >= 11.0 * k * rootHi * (1.0 + kSlack)) return Tri::False;
-  if (q - qError > 0.1 * k * rootHi * (1.0 + kSlack) && q + qError < 11.0 * k * rootLo * (1.0 - kSlack))
-    return Tri::Near;
-  certain = false;
-  return Tri::Near;
-}
-
-std::optional<ExactFig6> filteredFig6(const LocalWindow& w) {
-  const double L = w.edgeLength, ax = w.apex.x(), ay = w.apex.y(), b0 = w.b0, b1 = w.b1;
-  const double sx = w.source.x(), sy = w.source.y();
-  for (double x : {L, ax, ay, b0, b1, sx, sy}) {
-    const double m = std::abs(x);
-    if (m != 0.0 && !(m >= 1e-50 && m <= 1e50)) return std::nullopt;
-  }
-  constexpr double u = 0x1p-53;  // unit roundoff
-  bool certain = true;
-  const double S2 = std::max({L * L, ax * ax + ay * ay, (ax - L) * (ax - L) + ay * ay});
-  const double S2Error = 16 * u;
-  ExactFig6 r;
-  auto done = [&](std::optional<Fig6Branch> b, const char* near = nullptr) -> std::optional<ExactFig6> {
-    if (!certain) return std::nullopt;
-    r.branch = b;
-    if (near) r.nearWhat = near;
-    return r;
-  };
-  const Tri flat = filteredLeq(ay, 0.0, tol::kFlatFaceRel, S2, S2Error, certain);
-  if (!certain || flat == Tri::Near) return done(std::nullopt, "apex height vs kFlatFaceRel");
-  if (flat == Tri::True) return done(Fig6Branch::ZeroAreaFace);
-  const Tri g1 = filteredLeq(std::abs(sy), 0.0, tol::kCoincideRel, S2, S2Error, certain);
-  if (!certain || g1 == Tri::Near) return done(std::nullopt, "|s.y| vs kCoincideRel (G1)");
-  if (g1 == Tri::True) {
-    const double d0 = b0 - sx, d1 = sx - b1;
-    const Tri in0 = filteredLeq(d0, 2 * u * std::abs(d0), tol::kCoincideRel, S2, S2Error, certain);
-    const Tri in1 = filteredLeq(d1, 2 * u * std::abs(d1), tol::kCoincideRel, S2, S2Error, certain);
-    if (!certain || in0 == Tri::Near || in1 == Tri::Near) return done(std::nullopt, "s.x vs [b0, b1] (G1 inside)");
-    return done(in0 == Tri::True && in1 == Tri::True ? Fig6Branch::G1Inside : Fig6Branch::G1Outside);
-  }
-  auto side = [&](double bx, Tri& collinear) {
-    const double ux = bx - sx, uy = -sy, vx = ax - bx, vy = ay;
-    const double z = ux * vy - uy * vx;
-    const double zError = 8 * u * (std::abs(ux * vy) + std::abs(uy * vx));
-    collinear = filteredLeq(std::abs(z), zError, tol::kCollinearSin, (ux * ux + uy * uy) * (vx * vx + vy * vy),
-                            32 * u, certain);
-    return z;  // its sign is certain where `collinear` is certainly False: |z| ≥ 11 k √S2 ≫ zError
-  };
-  Tri col0, col1;
-  const double z0 = side(b0, col0);
-  if (!certain || col0 == Tri::Near) return done(std::nullopt, "s, b0, v1 collinearity (G2/G4)");
-  if (col0 == Tri::True) {
-    const Tri atV0 = filteredLeq(b0, 0.0, tol::kCoincideRel, S2, S2Error, certain);
-    if (!certain || atV0 == Tri::Near) return done(std::nullopt, "b0 = v0 (G4 vs G2)");
-    return done(atV0 == Tri::True ? Fig6Branch::G4 : Fig6Branch::G2);
-  }
-  const double z1 = side(b1, col1);
-  if (!certain || col1 == Tri::Near) return done(std::nullopt, "s, b1, v1 collinearity (G3/G5)");
-  if (col1 == Tri::True) {
-    const double d = L - b1;
-    const Tri atV2 = filteredLeq(d, 2 * u * std::abs(d), tol::kCoincideRel, S2, S2Error, certain);
-    if (!certain || atV2 == Tri::Near) return done(std::nullopt, "b1 = v2 (G5 vs G3)");
-    return done(atV2 == Tri::True ? Fig6Branch::G5 : Fig6Branch::G3);
-  }
-  if (z0 > 0) return done(Fig6Branch::LeftOfWedge);
-  if (z1 < 0) return done(Fig6Branch::RightOfWedge);
-  return done(Fig6Branch::InsideWedge);
-}
-
-ExactFig6 exactFig6Rational(const LocalWindow& w) {
-  const Rat L(w.edgeLength), ax(w.apex.x()), ay(w.apex.y()), b0(w.b0), b1(w.b1);
-  const Rat sx(w.source.x()), sy(w.source.y());
-  Rat S2 = L * L;
-  S2 = std::max(S2, Rat(ax * ax + ay * ay));
-  S2 = std::max(S2, Rat((ax - L) * (ax - L) + ay * ay));
-  ExactFig6 r;
-  auto near = [&](const char* what) {
-    r.nearWhat = what;
-    return r;
-  };
-  const Tri flat = decideLeq(ay, tol::kFlatFaceRel, S2);
-  if (flat == Tri::Near) return near("apex height vs kFlatFaceRel");
-  if (flat == Tri::True) return r.branch = Fig6Branch::ZeroAreaFace, r;
-  const Tri g1 = decideLeq(absRat(sy), tol::kCoincideRel, S2);
-  if (g1 == Tri::Near) return near("|s.y| vs kCoincideRel (G1)");
-  if (g1 == Tri::True) {
-    const Tri in0 = decideLeq(b0 - sx, tol::kCoincideRel, S2);
-    const Tri in1 = decideLeq(sx - b1, tol::kCoincideRel, S2);
-    if (in0 == Tri::Near || in1 == Tri::Near) return near("s.x vs [b0, b1] (G1 inside)");
-    return r.branch = (in0 == Tri::True && in1 == Tri::True) ? Fig6Branch::G1Inside
-                                                                : Fig6Branch::G1Outside,
-           r;
-  }
-  // sideOfRay(s, b, v1): z = (b − s) × (v1 − b), collinear when |z| ≤ kCollinearSin |b − s| |v1 − b|.
-  auto side = [&](const Rat& bx, Tri& collinear) {
-    const Rat ux = bx - sx, uy = -sy, vx = ax - bx, vy = ay;
-    const Rat z = ux * vy - uy * vx;
-    collinear = decideLeq(absRat(z), tol::kCollinearSin, Rat((ux * ux + uy * uy) * (vx * vx + vy * vy)));
-    return sgn(z);
-  };
-  Tri col0, col1;
-  const int z0 = side(b0, col0);
-  if (col0 == Tri::Near) return near("s, b0, v1 collinearity (G2/G4)");
-  if (col0 == Tri::True) {
-    const Tri atV0 = decideLeq(b0, tol::kCoincideRel, S2);
-    if (atV0 == Tri::Near) return near("b0 = v0 (G4 vs G2)");
-    return r.branch = atV0 == Tri::True ? Fig6Branch::G4 : Fig6Branch::G2, r;
-  }
-  const int z1 = side(b1, col1);
-  if (col1 == Tri::Near) return near("s, b1, v1 collinearity (G3/G5)");
-  if (col1 == Tri::True) {
-    const Tri atV2 = decideLeq(L - b1, tol::kCoincideRel, S2);
-    if (atV2 == Tri::Near) return near("b1 = v2 (G5 vs G3)");
-    return r.branch = atV2 == Tri::True ? Fig6Branch::G5 : Fig6Branch::G3, r;
-  }
-  if (z0 > 0) return r.branch = Fig6Branch::LeftOfWedge, r;
-  if (z1 < 0) return r.branch = Fig6Branch::RightOfWedge, r;
-  return r.branch = Fig6Branch::InsideWedge, r;
-}
-
-/// The Fig. 6 tree on exact rationals, through the double filter where that is certain. A
-/// configuration with a non-finite value has no exact decision (GMP raises SIGFPE on one).
-ExactFig6 exactFig6(const LocalWindow& w) {
-  for (double x : {w.edgeLength, w.apex.x(), w.apex.y(), w.b0, w.b1, w.source.x(), w.source.y()})
-    if (!std::isfinite(x)) return {std::nullopt, "a non-finite value in the configuration"};
-  if (auto r = filteredFig6(w)) return *std::move(r);
-  return exactFig6Rational(w);
-}
-
-struct Exit {
-  int edge = 0;  ///< 0: none found
-  double t = 0.0;
-  Vec2 point{0.0, 0.0};
-};
-
-/// Where the ray from s through p (p on e0, s below it) leaves the face v0 v1 v2. Measured from p
-/// (not s) and from the segment's end nearer the crossing: from s, or from the far end of a long
-/// edge, the cross products cancel down to the rounding of those long vectors. Computed from v1,
-/// a crossing near v2 on a 6.7e7-long e2 was 0.03 off, and the coverage check asked a window to
-/// cover a stretch of e2 its rays never reach (corpus/fuzz_propagation/regress/coverage-crossing-
-/// near-v2-of-a-long-edge-measured-from-its-far-end).
-Exit exitOf(const Vec2& s, const Vec2& p, const Vec2& v0, const Vec2& v1, const Vec2& v2) {
-  const Vec2 d = p - s;
-  Exit best;
-  double bestBeyond = -INFINITY;
-  const Vec2 A[2] = {v0, v1}, B[2] = {v1, v2};
-  for (int k = 0; k < 2; ++k) {
-    const Vec2 e = B[k] - A[k];
-    const double denom = cross2(e, d);
-    if (denom == 0.0) continue;
-    double t = cross2(p - A[k], d) / denom;
-    const double beyond = cross2(p - A[k], e) / denom;  // p + beyond·d is on the line
-    Vec2 point;
-    if (t <= 0.5) {
-      if (!(t >= -1e-9)) continue;
-      point = A[k] + std::max(t, 0.0) * e;
-    } else {  // from B: t = 1 − tB
-      const double tB = cross2(p - B[k], d) / cross2(A[k] - B[k], d);
-      if (!(tB >= -1e-9)) continue;
-      t = 1.0 - tB;
-      point = B[k] + std::max(tB, 0.0) * (A[k] - B[k]);
-    }
-    if (beyond > bestBeyond) {
-      bestBeyond = beyond;
-      best.edge = k + 1;
-      best.t = std::clamp(t, 0.0, 1.0);
-      best.point = point;
-    }
-  }
-  return best;
-}
-
-Vec2 childPoint(const LocalWindow& w, int edge, double t) {
-  const Vec2 v0(0.0, 0.0), v2(w.edgeLength, 0.0);
-  return edge == 1 ? Vec2(v0 + t * (w.apex - v0)) : Vec2(w.apex + t * (v2 - w.apex));
-}
-
-std::string describeLocal(const LocalWindow& w) {
-  std::ostringstream os;
-  os << std::setprecision(17) << "L=" << w.edgeLength << " apex=(" << w.apex.x() << ", "
-     << w.apex.y() << ") window=[" << w.b0 << ", " << w.b1 << "] s=(" << w.source.x() << ", "
-     << w.source.y() << ")";
-  return os.str();
-}
-
-std::string describeResult(const LocalPropagation& r) {
-  std::ostringstream os;
-  os << std::setprecision(17) << name(r.branch);
-  for (int c = 0; c < r.numChildren; ++c)
-    os << " e" << int(r.children[c].edge) << "[" << r.children[c].t0 << ", " << r.children[c].t1 << "]";
-  return os.str();
-}
-
-
-// ===  Coverage of a window's wedge (fuzz_predicates, fuzz_propagation) ==========================
-
-/// The angle by which an ε-decision of Fig. 6 may move a boundary ray of the wedge: the
-/// collinearity angle, or a coincidence distance seen from s; 100× that is the slack of the
-/// coverage and soundness checks (bugs move rays by far more).
-double wedgeSlack(const LocalWindow& w) {
-  const Vec2 s = w.source, b0(w.b0, 0.0), b1(w.b1, 0.0);
-  return 100.0 * (tol::kCollinearSin + tol::kCoincideRel * localScale(w) / std::min((b0 - s).norm(), (b1 - s).norm()));
-}
-
-/// What is wrong with propagateLocal's children (at most two, on e1 or e2, one per edge,
-/// 0 <= t0 <= t1 <= 1), or nullptr.
-const char* localChildrenProblem(const LocalPropagation& r) {
-  if (r.numChildren > 2) return "more than two children";
-  for (int i = 0; i < r.numChildren; ++i) {
-    const LocalChild& ch = r.children[i];
-    if ((ch.edge != 1 && ch.edge != 2) || !(ch.t0 >= 0.0 && ch.t0 <= ch.t1 && ch.t1 <= 1.0))
-      return i == 0 ? "child 0 outside 0 <= t0 <= t1 <= 1" : "child 1 outside 0 <= t0 <= t1 <= 1";
-    if (i == 1 && ch.edge == r.children[0].edge) return "two children on the same edge";
-  }
-  return nullptr;
-}
-
-struct Coverage {
-  bool imageBelowEpsilon = false;  ///< nothing to cover: the wedge's image is below ε
-  std::string uncovered;           ///< the first ray no child covers, or "" when all are covered
-};
-
-/// Coverage: every sampled ray from s through the window [b0, b1] that enters the face leaves it
-/// through e1 or e2 inside one of `covering` (ranges in the local parameter of e1, e2), up to
-/// 1e-12 in the parameter or wedgeSlack's angle from a covering range's end. Only for the
-/// branches whose rays cross the face (not G1, not zero-area).
-Coverage wedgeCoverage(const LocalWindow& w, std::span<const LocalChild> covering) {
-  Coverage result;
-  const Vec2 v0(0.0, 0.0), v2(w.edgeLength, 0.0), v1 = w.apex, s = w.source;
-  const double scale = localScale(w);
-  const double kappa = wedgeSlack(w);
-  std::array<Vec2, 4> childEnds;
-  std::size_t ends = 0;
-  for (const LocalChild& ch : covering) {
-    if (ends + 2 > childEnds.size()) break;
-    childEnds[ends++] = childPoint(w, ch.edge, ch.t0);
-    childEnds[ends++] = childPoint(w, ch.edge, ch.t1);
-  }
-  constexpr int kSamples = 16;
-  // Where the wedge's image on e1 ∪ e2 is shorter than ε (a far, grazing source seen through a
-  // tiny window), its children are below D1's ε or empty after rounding: nothing to cover. The ε
-  // is the children's own (intervalLengthScale: the distance of the source when that is larger
-  // than the face): a window 1.5e-9 wide seen from 3.5e7 away has ray directions that differ by
-  // less than one ulp of the source's coordinates, and its image on e2, 1e-9 long against an ε
-  // of 3.5e-4, rounds to nothing (corpus/fuzz_predicates/regress/coverage-image-below-the-far-
-  // source-epsilon).
-  Vec2 lo(INFINITY, INFINITY), hi(-INFINITY, -INFINITY);
-  for (int i = 0; i <= kSamples; ++i) {
-    const Exit x = exitOf(s, Vec2(w.b0 + (w.b1 - w.b0) * i / kSamples, 0.0), v0, v1, v2);
-    if (x.edge != 0) lo = lo.cwiseMin(x.point), hi = hi.cwiseMax(x.point);
-  }
-  const double imageTiny = tol::kTinyIntervalRel * std::max(scale, std::abs(s.x()) + std::abs(s.y()));
-  if ((hi - lo).norm() <= imageTiny) {
-    result.imageBelowEpsilon = true;
-    return result;
-  }
-  for (int i = 0; i <= kSamples; ++i) {
-    const Vec2 p(w.b0 + (w.b1 - w.b0) * i / kSamples, 0.0);
-    const Exit x = exitOf(s, p, v0, v1, v2);
-    if (x.edge == 0) continue;  // ray along e0's line: nothing enters
-    bool covered = false;
-    for (const LocalChild& ch : covering)
-      covered = covered || (ch.edge == x.edge && x.t >= ch.t0 - 1e-12 && x.t <= ch.t1 + 1e-12);
-    for (std::size_t k = 0; k < ends && !covered; ++k)
-      if (sinAngle(x.point - s, childEnds[k] - s) <= kappa) covered = true;
-    if (!covered) {
-      std::ostringstream os;
-      os << std::setprecision(17) << "the ray from s through x = " << p.x() << " leaves the face on e"
-         << x.edge << " at t = " << x.t << ", outside every child";
-      result.uncovered = os.str();
-      return result;
-    }
-  }
-  return result;
-}
-}  // namespace
+// ===  fuzz_predicates ===========================================================================
 
 Verdict checkPredicates(const PredicateCase& c) {
   Verdict v;
@@ -1164,6 +741,8 @@ std::optional<PropagationCase> inMeshUnits(const PropagationCase& c, MeshUnit& u
   m.window.sigma *= unit.inverse;
   return m;
 }
+
+using detail::scalesExactly;
 
 /// Whether every value of w times k (a power of two) is exact: the Fig. 6 tree decides w and
 /// w × k alike only then (an apex 2^-500 of its face's size underflows to 0 at 2^-507).
@@ -1425,151 +1004,7 @@ Verdict checkEdgeUpdate(const EdgeUpdateCase& input) {
   return v;
 }
 
-// ===  The unfolding check (fuzz_two_faces, fuzz_solver) =========================================
-
 namespace {
-
-struct UnfoldingFailure : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-
-/// Checks every interval a propagation case creates against an independent 3-D construction: the
-/// parent's pseudo-source placed in the crossed face's plane (mirrored across the parent's edge,
-/// away from the face's third vertex) and the child edge's points from the mesh positions. The
-/// child's σ + |x − s| must equal σ + that 3-D distance. Forwards every event to `next`.
-class UnfoldingChecker : public SolverObserver {
- public:
-  UnfoldingChecker(const Mesh& mesh, SolverObserver* next) : mesh_(mesh), next_(next) {}
-  std::uint64_t checked = 0;
-
-  void onPropagation(const PropagationEvent& e) override {
-    face_ = e.face;
-    edge_ = e.edge;
-    window_ = e.window;
-    if (next_) next_->onPropagation(e);
-  }
-  void onEdgeUpdate(const EdgeUpdateEvent& e) override {
-    if (next_) next_->onEdgeUpdate(e);
-    if (e.branch != nullptr) checkChild(e);
-  }
-  void onFinish(const GeodesicSolver& s) override {
-    if (next_) next_->onFinish(s);
-  }
-
- private:
-  void checkChild(const EdgeUpdateEvent& e) {
-    const Edge& E = mesh_.edge(edge_);
-    const Edge& C = mesh_.edge(e.edge);
-    const Interval& child = e.incoming;
-    auto why = [&] {
-      std::ostringstream os;
-      os << std::setprecision(17) << "window " << describeInterval(window_) << " on edge " << edge_
-         << " (" << E.vertex[0] << "-" << E.vertex[1] << ") crossing face " << face_ << " made "
-         << describeInterval(child) << " on edge " << e.edge << " (" << C.vertex[0] << "-"
-         << C.vertex[1] << ") by branch " << name(*e.branch) << ": ";
-      return os.str();
-    };
-    if (mesh_.localEdgeIndex(face_, e.edge) < 0 || e.edge == edge_)
-      throw UnfoldingFailure(why() + "the child is not on another edge of the crossed face");
-    if (child.side != mesh_.sideOf(e.edge, face_))
-      throw UnfoldingFailure(why() + "the child's source is not on the crossed face's side");
-    if (child.sigma != window_.sigma || child.origin != window_.origin)
-      throw UnfoldingFailure(why() + "the child's sigma or origin differs from its parent's");
-    // In mesh units, as the intervals are.
-    const auto at = [&](Index x) { return mesh_.positionInMeshUnits(x); };
-    const Vec3 o = at(E.vertex[0]);
-    const Vec3 dir = (at(E.vertex[1]) - o).normalized();
-    Index apex = kNoIndex;
-    for (Index x : mesh_.face(face_))
-      if (x != E.vertex[0] && x != E.vertex[1]) apex = x;
-    const Vec3 rel = at(apex) - o;
-    const Vec3 perp = rel - rel.dot(dir) * dir;
-    const double h = perp.norm();
-    const double scale = std::max(rel.norm(), E.length);
-    if (!(h > 1e-9 * scale)) return;  // zero-area or needle face: no reliable in-plane normal
-    const Vec3 n = perp / h;
-    const Vec3 s3 = o + window_.source.x() * dir - window_.source.y() * n;
-    const Vec3 co = at(C.vertex[0]);
-    const Vec3 cdir = (at(C.vertex[1]) - co).normalized();
-    // The normal's rounding grows as the face gets thinner, and moves s3 by that × |s|.
-    const double amplification = 1e-14 * window_.source.norm() * (rel.norm() / h);
-    // s3 and the sample point are placed in 3D, each to the rounding of its coordinates
-    // (tol::kPositionRoundingRel): far from the origin that is more than a small face's
-    // unfolding can be checked to (corpus/fuzz_two_faces/regress/unfolding-points-placed-far-
-    // from-origin: 3e-4 edges at 2.7e11, positions good to 6e-5).
-    const double placing = 2.0 * tol::kPositionRoundingRel *
-                           std::max({o.cwiseAbs().maxCoeff(), co.cwiseAbs().maxCoeff(), s3.cwiseAbs().maxCoeff()});
-    for (double x : {child.b0, 0.5 * (child.b0 + child.b1), child.b1}) {
-      const double truth = (co + x * cdir - s3).norm();
-      const double claim = std::hypot(x - child.source.x(), child.source.y());
-      const double tolerance = 1e-11 * (truth + C.length + E.length) + amplification + placing;
-      ++checked;
-      if (!(std::abs(claim - truth) <= tolerance)) {
-        std::ostringstream os;
-        os << std::setprecision(17) << why() << "at x = " << x << " the child gives sigma + " << claim
-           << " but the unfolded parent source is " << truth << " away";
-        throw UnfoldingFailure(os.str());
-      }
-    }
-  }
-
-  const Mesh& mesh_;
-  SolverObserver* next_;
-  Index face_ = kNoIndex, edge_ = kNoIndex;
-  Interval window_;
-};
-
-/// True if one of the solve's vertex distances is beyond the largest double in file units.
-bool someDistanceOverflows(const GeodesicSolver& solver) {
-  for (double d : solver.vertexDistancesInMeshUnits())
-    if (inFileUnitsRange(d, solver.mesh().meshUnit()) == ScaledRange::Overflow) return true;
-  return false;
-}
-
-/// Runs a solve with the observers, turning what they throw into a verdict. False if it failed.
-/// A 'distance-overflow' refusal passes when the solve's own distances (which the checks after
-/// this compare with the oracles, in mesh units) do overflow in file units.
-bool solveChecked(GeodesicSolver& solver, std::span<const SurfacePoint> sources,
-                  const SolveOptions& options, Verdict& v) {
-  try {
-    solver.solve(sources, options);
-    return true;
-  } catch (const InputError& e) {
-    if (e.kind() == "distance-overflow" && someDistanceOverflows(solver)) return true;
-    fail(v, "unexpected-exception", e.what());
-  } catch (const InvariantViolation& e) {
-    std::ostringstream os;
-    os << e.what() << "\n  edge " << e.edge << " length " << fmt(e.edgeLength) << " branch " << e.branch;
-    for (const Interval& w : e.before) os << "\n  before   " << describeInterval(w);
-    os << "\n  incoming " << describeInterval(e.incoming);
-    for (const Interval& w : e.after) os << "\n  after    " << describeInterval(w);
-    fail(v, e.invariant(), os.str());
-  } catch (const UnfoldingFailure& e) {
-    fail(v, "unfolding", e.what());
-  } catch (const InternalError& e) {
-    fail(v, "internal-check", e.what());
-  } catch (const std::exception& e) {
-    fail(v, "unexpected-exception", e.what());
-  }
-  return false;
-}
-
-std::optional<Mesh> buildMesh(const TriangleSoup& soup, Verdict& v) {
-  try {
-    return Mesh(soup);
-  } catch (const std::exception& e) {
-    fail(v, "validated-mesh-refused", std::string("validateMesh found no error but Mesh threw: ") + e.what());
-    return std::nullopt;
-  }
-}
-
-std::string describeSoup(const TriangleSoup& soup) {
-  std::ostringstream os;
-  os << std::setprecision(17) << "OFF\n" << soup.positions.size() << " " << soup.faces.size() << " 0\n";
-  for (const Vec3& p : soup.positions) os << p.x() << " " << p.y() << " " << p.z() << "\n";
-  for (const auto& f : soup.faces) os << "3 " << f[0] << " " << f[1] << " " << f[2] << "\n";
-  return os.str();
-}
 
 // ===  fuzz_two_faces: the exact two-face distance ===============================================
 
@@ -2136,162 +1571,6 @@ void describe(FuzzTarget t, std::span<const std::uint8_t> bytes, std::ostream& o
 
 namespace {
 
-constexpr const char* kPalette[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd",
-                                    "#8c564b", "#e377c2", "#17becf", "#bcbd22", "#7f7f7f"};
-
-/// A rectangle of the picture showing a world rectangle, y up; uniform keeps the aspect ratio.
-struct Panel {
-  double px, py, pw, ph;
-  double minX = 0, minY = 0, sx = 1, sy = 1, ox = 0, oy = 0;
-  Panel(double x, double y, double w, double h, double x0, double y0, double x1, double y1, bool uniform)
-      : px(x), py(y), pw(w), ph(h) {
-    if (!(x1 > x0)) x0 -= 0.5, x1 += 0.5;
-    if (!(y1 > y0)) y0 -= 0.5, y1 += 0.5;
-    const double mx = 0.06 * (x1 - x0), my = 0.08 * (y1 - y0);
-    x0 -= mx, x1 += mx, y0 -= my, y1 += my;
-    minX = x0, minY = y0;
-    sx = pw / (x1 - x0), sy = ph / (y1 - y0);
-    if (uniform) {
-      const double k = std::min(sx, sy);
-      ox = 0.5 * (pw - k * (x1 - x0));
-      oy = 0.5 * (ph - k * (y1 - y0));
-      sx = sy = k;
-    }
-  }
-  Vec2 map(const Vec2& p) const { return {px + ox + (p.x() - minX) * sx, py + ph - oy - (p.y() - minY) * sy}; }
-};
-
-class SvgDoc {
- public:
-  SvgDoc(double w, double h) : w_(w), h_(h) { body_ << std::setprecision(6); }
-  void line(const Panel& P, const Vec2& a, const Vec2& b, const std::string& color, double width, bool dashed = false) {
-    const Vec2 A = P.map(a), B = P.map(b);
-    body_ << "<line x1='" << A.x() << "' y1='" << A.y() << "' x2='" << B.x() << "' y2='" << B.y()
-          << "' stroke='" << color << "' stroke-width='" << width << "'"
-          << (dashed ? " stroke-dasharray='6,4'" : "") << " stroke-linecap='round'/>\n";
-  }
-  void polyline(const Panel& P, const std::vector<Vec2>& pts, const std::string& color, double width, bool dashed = false) {
-    body_ << "<polyline fill='none' stroke='" << color << "' stroke-width='" << width << "'"
-          << (dashed ? " stroke-dasharray='6,4'" : "") << " points='";
-    for (const Vec2& p : pts) {
-      const Vec2 q = P.map(p);
-      body_ << q.x() << "," << q.y() << " ";
-    }
-    body_ << "'/>\n";
-  }
-  void polygon(const Panel& P, const std::vector<Vec2>& pts, const std::string& fill, const std::string& stroke) {
-    body_ << "<polygon fill='" << fill << "' stroke='" << stroke << "' stroke-width='1' points='";
-    for (const Vec2& p : pts) {
-      const Vec2 q = P.map(p);
-      body_ << q.x() << "," << q.y() << " ";
-    }
-    body_ << "'/>\n";
-  }
-  void dot(const Panel& P, const Vec2& p, double r, const std::string& color) {
-    const Vec2 q = P.map(p);
-    body_ << "<circle cx='" << q.x() << "' cy='" << q.y() << "' r='" << r << "' fill='" << color << "'/>\n";
-  }
-  void label(const Panel& P, const Vec2& p, const std::string& text, double size = 12,
-             const std::string& color = "#000", double dx = 4, double dy = -4) {
-    const Vec2 q = P.map(p);
-    labelPx(q.x() + dx, q.y() + dy, text, size, color);
-  }
-  void labelPx(double x, double y, const std::string& text, double size = 12, const std::string& color = "#000") {
-    body_ << "<text x='" << x << "' y='" << y << "' font-family='monospace' font-size='" << size
-          << "' fill='" << color << "'>" << escape(text) << "</text>\n";
-  }
-  void write(std::ostream& out) const {
-    out << "<?xml version='1.0' encoding='UTF-8'?>\n<svg xmlns='http://www.w3.org/2000/svg' width='"
-        << w_ << "' height='" << h_ << "' viewBox='0 0 " << w_ << " " << h_ << "'>\n"
-        << "<rect width='100%' height='100%' fill='white'/>\n"
-        << body_.str() << "</svg>\n";
-  }
-
- private:
-  static std::string escape(const std::string& s) {
-    std::string r;
-    for (char ch : s) {
-      if (ch == '<') r += "&lt;";
-      else if (ch == '>') r += "&gt;";
-      else if (ch == '&') r += "&amp;";
-      else r += ch;
-    }
-    return r;
-  }
-  double w_, h_;
-  std::ostringstream body_;
-};
-
-std::string shortNum(double x) {
-  std::ostringstream os;
-  os << std::setprecision(6) << x;
-  return os.str();
-}
-
-/// Colours by pseudo-source: the same function (source, σ, side, origin) keeps its colour.
-class SourceColours {
- public:
-  const char* operator()(const Interval& w) {
-    const auto key = std::make_tuple(w.source.x(), w.source.y(), w.sigma, w.side, w.origin);
-    auto it = index_.find(key);
-    if (it == index_.end()) it = index_.emplace(key, index_.size()).first;
-    return kPalette[it->second % std::size(kPalette)];
-  }
-
- private:
-  std::map<std::tuple<double, double, double, int, int>, std::size_t> index_;
-};
-
-void svgPredicates(const LocalWindow& w, std::ostream& out, const std::string& title = "fuzz_predicates",
-                   const std::string& extra = "") {
-  SvgDoc doc(900, 700);
-  const Vec2 v0(0, 0), v2(w.edgeLength, 0), v1 = w.apex, s = w.source;
-  const double scale = localScale(w);
-  const bool sourceShown = (s - 0.5 * (v0 + v2)).norm() <= 6.0 * scale;
-  double x0 = std::min({0.0, v1.x()}), x1 = std::max(w.edgeLength, v1.x());
-  double y0 = 0.0, y1 = v1.y();
-  if (sourceShown) x0 = std::min(x0, s.x()), x1 = std::max(x1, s.x()), y0 = std::min(y0, s.y());
-  else y0 = -0.3 * scale;
-  Panel P(20, 60, 860, 620, x0, y0, x1, y1, true);
-  doc.polygon(P, {v0, v1, v2}, "#eeeeee", "#999999");
-  doc.line(P, v0, v2, "#000", 2);
-  doc.line(P, Vec2(w.b0, 0), Vec2(w.b1, 0), "#1f77b4", 6);
-  const LocalPropagation r = propagateLocal(w);
-  // The wedge: rays from s through b0 and b1 to where they leave the face.
-  for (double b : {w.b0, w.b1}) {
-    const Vec2 p(b, 0);
-    const Exit x = exitOf(s, p, v0, v1, v2);
-    const Vec2 far = x.edge != 0 ? x.point : p;
-    const Vec2 from = sourceShown ? s : p - (p - s).normalized() * 0.3 * scale;
-    doc.line(P, from, far, "#ff7f0e", 1.5, true);
-  }
-  for (int i = 0; i < r.numChildren; ++i) {
-    const LocalChild& c = r.children[i];
-    doc.line(P, childPoint(w, c.edge, c.t0), childPoint(w, c.edge, c.t1), c.edge == 1 ? "#2ca02c" : "#9467bd", 5);
-  }
-  doc.dot(P, v0, 4, "#000");
-  doc.dot(P, v1, 4, "#000");
-  doc.dot(P, v2, 4, "#000");
-  doc.label(P, v0, "v0");
-  doc.label(P, v1, "v1");
-  doc.label(P, v2, "v2");
-  doc.label(P, Vec2(w.b0, 0), "b0", 11, "#1f77b4", -6, 16);
-  doc.label(P, Vec2(w.b1, 0), "b1", 11, "#1f77b4", -6, 16);
-  if (sourceShown) {
-    doc.dot(P, s, 5, "#d62728");
-    doc.label(P, s, "s");
-  }
-  doc.labelPx(20, 20, title + ": " + describeResult(r), 14);
-  if (!extra.empty()) doc.labelPx(20, 695, extra, 11);
-  const ExactFig6 e = exactFig6(w);
-  doc.labelPx(20, 40, "L=" + shortNum(w.edgeLength) + " v1=(" + shortNum(v1.x()) + ", " + shortNum(v1.y()) +
-                          ") [b0,b1]=[" + shortNum(w.b0) + ", " + shortNum(w.b1) + "] s=(" + shortNum(s.x()) +
-                          ", " + shortNum(s.y()) + ")  exact: " +
-                          (e.branch ? std::string(name(*e.branch)) : "near " + e.nearWhat) +
-                          "  (e1 green, e2 purple)", 12);
-  doc.write(out);
-}
-
 /// The face unfolded onto e0's frame with the window, its wedge and propagateLocal's ranges (as
 /// fuzz_predicates draws them), and childInterval's intervals in the footer.
 void svgPropagation(const PropagationCase& c, std::ostream& out) {
@@ -2309,7 +1588,7 @@ void svgPropagation(const PropagationCase& c, std::ostream& out) {
     else
       os << (made.outcome == ChildOutcome::Empty ? "empty" : "dropped (seen from outside)");
   }
-  svgPredicates(w, out, "fuzz_propagation", os.str());
+  svgLocalWindow(w, out, "fuzz_propagation", os.str());
 }
 
 void svgEdgeUpdate(const EdgeUpdateCase& c, std::ostream& out) {
@@ -2376,34 +1655,6 @@ void svgEdgeUpdate(const EdgeUpdateCase& c, std::ostream& out) {
   doc.labelPx(10, 595, "edge [0, " + shortNum(L) + "] and pseudo-sources (unfolded below it; far ones omitted)", 12);
   doc.labelPx(10, 20, "fuzz_edge_update: distance functions coloured by pseudo-source" +
                           (error.empty() ? std::string() : "; insert threw: " + error), 14);
-  doc.write(out);
-}
-
-/// The mesh projected onto the plane of its two widest bounding-box axes.
-void svgMesh(const TriangleSoup& soup, const std::vector<Vec3>& sources, std::span<const double> d,
-             const std::string& title, std::ostream& out) {
-  Vec3 lo = Vec3::Constant(INFINITY), hi = Vec3::Constant(-INFINITY);
-  for (const Vec3& p : soup.positions) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
-  const Vec3 ext = hi - lo;
-  int drop = 0;
-  for (int k = 1; k < 3; ++k)
-    if (ext[k] < ext[drop]) drop = k;
-  const int ax = drop == 0 ? 1 : 0, ay = drop == 2 ? 1 : 2;
-  auto proj = [&](const Vec3& p) { return Vec2(p[ax], p[ay]); };
-  SvgDoc doc(900, 900);
-  Panel P(20, 40, 860, 840, lo[ax], lo[ay], hi[ax], hi[ay], true);
-  for (const auto& f : soup.faces)
-    doc.polygon(P, {proj(soup.positions[f[0]]), proj(soup.positions[f[1]]), proj(soup.positions[f[2]])},
-                "#dde8f4", "#6b7f99");
-  for (std::size_t x = 0; x < soup.positions.size(); ++x) {
-    doc.dot(P, proj(soup.positions[x]), 2.5, "#333");
-    std::string text = std::to_string(x);
-    if (x < d.size()) text += ": " + (std::isfinite(d[x]) ? shortNum(d[x]) : std::string("inf"));
-    doc.label(P, proj(soup.positions[x]), text, 10, "#333");
-  }
-  for (const Vec3& s : sources) doc.dot(P, proj(s), 6, "#d62728");
-  const char* axes = "xyz";
-  doc.labelPx(20, 22, title + " (projected onto " + axes[ax] + axes[ay] + "; sources red)", 14);
   doc.write(out);
 }
 
@@ -2482,7 +1733,7 @@ void writeSvg(FuzzTarget t, std::span<const std::uint8_t> bytes, std::ostream& o
     doc.write(out);
     return;
   }
-  if (const auto* c = std::get_if<PredicateCase>(&*decoded)) return svgPredicates(c->window, out);
+  if (const auto* c = std::get_if<PredicateCase>(&*decoded)) return svgLocalWindow(c->window, out);
   if (const auto* c = std::get_if<EdgeUpdateCase>(&*decoded)) return svgEdgeUpdate(*c, out);
   if (const auto* c = std::get_if<PropagationCase>(&*decoded)) return svgPropagation(*c, out);
   if (const auto* c = std::get_if<TwoFaceCase>(&*decoded)) return svgTwoFaces(*c, out);

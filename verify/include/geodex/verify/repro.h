@@ -69,6 +69,7 @@
 #include "geodex/surface_point.h"
 #include "geodex/verify/cases/byte_codec.h"
 #include "geodex/verify/cases/fuzz_target.h"
+#include "geodex/verify/cases/source_spec.h"
 
 namespace geodex::verify {
 
@@ -139,17 +140,6 @@ struct PropagationSpec {
   /// way in a mesh, and the child interval is then mirrored along it).
   std::uint8_t childDirections = 0;
   // Nudges of b0, b1 are relative to L; of the source and σ to 16 lattice units.
-};
-
-/// A source point of fuzz_two_faces and fuzz_solver.
-struct SourceSpec {
-  std::uint8_t kind = 0;     ///< mod 3: vertex, edge point, face point
-  std::uint8_t element = 0;  ///< vertex: index mod #V (an unreferenced one moves to a face's
-                             ///< corner); edge and face point: face index mod #F
-  std::uint8_t corner = 0;   ///< edge point: the edge from corner k mod 3 to corner k + 1
-  Quantity t;                ///< edge point: t ∈ [0, 16] / 16; nudges relative to 1
-  Quantity a, b;             ///< face point: barycentrics a, b ∈ [0, 16] / 16, c = 1 − a − b
-                             ///< (reflected when a + b > 1)
 };
 
 /// fuzz_two_faces: faces B = (v0, v1, v2) and A = (v0, v2, w) sharing the edge v0v2; windows
