@@ -545,20 +545,27 @@ EdgeUpdateCase parseEdgeUpdateReproducer(std::string_view text) {
 
 // ===  Decoding ==================================================================================
 
-std::optional<FuzzCase> decode(FuzzTarget t, std::span<const std::uint8_t> bytes) {
-  if (t == FuzzTarget::MeshIo) {
-    if (bytes.size() > kMaxMeshIoInputBytes) return std::nullopt;
-    MeshIoCase c;
-    std::size_t skip = 0;
-    if (!bytes.empty() && bytes[0] >= 1 && bytes[0] <= 3) {
-      static const char* const kHints[] = {"off", "obj", "ply"};
-      c.formatHint = kHints[bytes[0] - 1];
-      skip = 1;
-    }
-    c.bytes.assign(reinterpret_cast<const char*>(bytes.data()) + skip, bytes.size() - skip);
-    return c;
+std::optional<MeshIoCase> decodeMeshIo(std::span<const std::uint8_t> bytes) {
+  if (bytes.size() > kMaxMeshIoInputBytes) return std::nullopt;
+  MeshIoCase c;
+  std::size_t skip = 0;
+  if (!bytes.empty() && bytes[0] >= 1 && bytes[0] <= 3) {
+    static const char* const kHints[] = {"off", "obj", "ply"};
+    c.formatHint = kHints[bytes[0] - 1];
+    skip = 1;
   }
-  if (t == FuzzTarget::EdgeUpdate && isEdgeUpdateReproducer(bytes)) {
+  c.bytes.assign(reinterpret_cast<const char*>(bytes.data()) + skip, bytes.size() - skip);
+  return c;
+}
+
+std::optional<PredicateCase> decodePredicates(std::span<const std::uint8_t> bytes) {
+  if (bytes.size() > kMaxFuzzInputBytes) return std::nullopt;
+  ByteReader r(bytes);
+  return makePredicateCase(readPredicateSpec(r));
+}
+
+std::optional<EdgeUpdateCase> decodeEdgeUpdate(std::span<const std::uint8_t> bytes) {
+  if (isEdgeUpdateReproducer(bytes)) {
     try {
       EdgeUpdateCase c = parseEdgeUpdateReproducer(
           std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
@@ -583,23 +590,45 @@ std::optional<FuzzCase> decode(FuzzTarget t, std::span<const std::uint8_t> bytes
   }
   if (bytes.size() > kMaxFuzzInputBytes) return std::nullopt;
   ByteReader r(bytes);
+  return makeEdgeUpdateCase(readEdgeUpdateSpec(r));
+}
+
+std::optional<PropagationCase> decodePropagation(std::span<const std::uint8_t> bytes) {
+  if (bytes.size() > kMaxFuzzInputBytes) return std::nullopt;
+  ByteReader r(bytes);
+  return makePropagationCase(readPropagationSpec(r));
+}
+
+std::optional<TwoFaceCase> decodeTwoFaces(std::span<const std::uint8_t> bytes) {
+  if (bytes.size() > kMaxFuzzInputBytes) return std::nullopt;
+  ByteReader r(bytes);
+  return makeTwoFaceCase(readTwoFaceSpec(r));
+}
+
+std::optional<SolverCase> decodeSolver(std::span<const std::uint8_t> bytes) {
+  if (bytes.size() > kMaxFuzzInputBytes) return std::nullopt;
+  ByteReader r(bytes);
+  return makeSolverCase(readSolverSpec(r));
+}
+
+namespace {
+
+template <typename Case>
+std::optional<FuzzCase> asFuzzCase(std::optional<Case> c) {
+  if (!c) return std::nullopt;
+  return FuzzCase(std::move(*c));
+}
+
+}  // namespace
+
+std::optional<FuzzCase> decode(FuzzTarget t, std::span<const std::uint8_t> bytes) {
   switch (t) {
-    case FuzzTarget::Predicates:
-      if (auto c = makePredicateCase(readPredicateSpec(r))) return *c;
-      return std::nullopt;
-    case FuzzTarget::EdgeUpdate:
-      if (auto c = makeEdgeUpdateCase(readEdgeUpdateSpec(r))) return *c;
-      return std::nullopt;
-    case FuzzTarget::Propagation:
-      if (auto c = makePropagationCase(readPropagationSpec(r))) return *c;
-      return std::nullopt;
-    case FuzzTarget::TwoFaces:
-      if (auto c = makeTwoFaceCase(readTwoFaceSpec(r))) return *c;
-      return std::nullopt;
-    case FuzzTarget::Solver:
-      if (auto c = makeSolverCase(readSolverSpec(r))) return *c;
-      return std::nullopt;
-    case FuzzTarget::MeshIo: break;
+    case FuzzTarget::MeshIo: return asFuzzCase(decodeMeshIo(bytes));
+    case FuzzTarget::Predicates: return asFuzzCase(decodePredicates(bytes));
+    case FuzzTarget::EdgeUpdate: return asFuzzCase(decodeEdgeUpdate(bytes));
+    case FuzzTarget::Propagation: return asFuzzCase(decodePropagation(bytes));
+    case FuzzTarget::TwoFaces: return asFuzzCase(decodeTwoFaces(bytes));
+    case FuzzTarget::Solver: return asFuzzCase(decodeSolver(bytes));
   }
   return std::nullopt;
 }
@@ -1476,6 +1505,97 @@ void describeCounters(const DegeneracyCounters& c, std::ostream& out) {
 
 }  // namespace
 
+void describe(const MeshIoCase& c, std::ostream& out) {
+  out << std::setprecision(17);
+  out << "# fuzz_mesh_io: " << c.bytes.size() << " bytes, format "
+      << (c.formatHint.empty() ? "detected from the content" : c.formatHint) << "\n";
+  int lines = 0;
+  std::string line;
+  for (std::size_t i = 0; i <= c.bytes.size() && lines < 40; ++i) {
+    if (i == c.bytes.size() || c.bytes[i] == '\n') {
+      out << "| " << line << "\n";
+      line.clear();
+      ++lines;
+      continue;
+    }
+    const unsigned char ch = c.bytes[i];
+    if (ch >= 32 && ch < 127) {
+      line += static_cast<char>(ch);
+    } else {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\x%02x", ch);
+      line += buf;
+    }
+  }
+  if (lines == 40) out << "| ...\n";
+}
+
+void describe(const PredicateCase& c, std::ostream& out) {
+  out << std::setprecision(17);
+  const LocalWindow& w = c.window;
+  out << "# fuzz_predicates: a window on e0 = v0v2 propagated across the face v0 v1 v2 (Fig. 3 frame)\n"
+      << "edge-length " << w.edgeLength << "\n"
+      << "apex " << w.apex.x() << " " << w.apex.y() << "\n"
+      << "window " << w.b0 << " " << w.b1 << "\n"
+      << "source " << w.source.x() << " " << w.source.y() << "\n"
+      << "# local scale " << localScale(w) << "; v0 = (0, 0), v2 = (" << w.edgeLength << ", 0)\n";
+  const LocalPropagation r = propagateLocal(w);
+  out << "# propagateLocal: " << describeResult(r) << "\n";
+  const ExactFig6 e = exactFig6(w);
+  out << "# exact tree: " << (e.branch ? std::string(name(*e.branch)) : "undecided, near " + e.nearWhat) << "\n";
+}
+
+void describe(const EdgeUpdateCase& c, std::ostream& out) {
+  out << std::setprecision(17);
+  out << "# fuzz_edge_update: Algorithm 2 merges the incoming interval into the edge's list\n";
+  if (!c.note.empty()) out << "# " << c.note << "\n";
+  out << "edge-length " << c.edgeLength << "\n";
+  for (const Interval& w : c.before) out << "before   " << describeInterval(w) << "\n";
+  out << "incoming " << describeInterval(c.incoming) << "\n";
+}
+
+void describe(const PropagationCase& c, std::ostream& out) {
+  out << std::setprecision(17);
+  const Interval& w = c.window;
+  out << "# fuzz_propagation: an interval on e0 = v0v2 propagated across the face v0 v1 v2\n"
+      << "v0 " << c.face[0].transpose() << "\nv2 " << c.face[1].transpose() << "\nv1 "
+      << c.face[2].transpose() << "\n"
+      << "window " << w.b0 << " " << w.b1 << "\n"
+      << "source " << w.source.x() << " " << w.source.y() << "   # in e0's frame, y on the far side from v1\n"
+      << "sigma " << w.sigma << "\n"
+      << "e1 " << (c.e1Forward ? "v0->v1" : "v1->v0") << "\ne2 " << (c.e2Forward ? "v1->v2" : "v2->v1") << "\n";
+  const LocalWindow local = localWindowOf(c);
+  out << "# local frame: " << describeLocal(local) << "; local scale " << localScale(local) << "\n";
+  const LocalPropagation r = propagateLocal(local);
+  out << "# propagateLocal: " << describeResult(r) << "\n";
+  const ExactFig6 e = exactFig6(local);
+  out << "# exact tree: " << (e.branch ? std::string(name(*e.branch)) : "undecided, near " + e.nearWhat) << "\n";
+  for (int i = 0; i < r.numChildren; ++i) {
+    const ChildInterval made = childIntervalOf(c, local, r.children[i]);
+    out << "# childInterval e" << int(r.children[i].edge) << (childEdgeOf(c, r.children[i].edge).forward ? "" : " (backward)") << ": "
+        << (made.outcome == ChildOutcome::Made ? describeInterval(made.interval)
+            : made.outcome == ChildOutcome::Empty ? std::string("empty")
+                                                  : std::string("dropped: the source is seen from outside the face"))
+        << "\n";
+  }
+}
+
+void describe(const TwoFaceCase& c, std::ostream& out) {
+  out << std::setprecision(17);
+  out << "# fuzz_two_faces: faces B (0) and A (1) share the edge 0-1\n"
+      << describeSoup(c.soup) << "source " << formatSurfacePoint(c.source) << "\n";
+}
+
+void describe(const SolverCase& c, std::ostream& out) {
+  out << std::setprecision(17);
+  out << "# fuzz_solver: " << c.soup.faces.size() << " faces"
+      << (c.rectangle ? ", planar rectangle" : c.planar ? ", planar" : "") << "\n"
+      << describeSoup(c.soup);
+  for (const SurfacePoint& s : c.sources) out << "source " << formatSurfacePoint(s) << "\n";
+  if (c.stopDistance) out << "stop-distance " << *c.stopDistance << "\n";
+  if (c.checkSymmetry) out << "check-symmetry\n";
+}
+
 void describe(FuzzTarget t, std::span<const std::uint8_t> bytes, std::ostream& out) {
   out << std::setprecision(17);
   const auto decoded = decode(t, bytes);
@@ -1491,89 +1611,14 @@ void describe(FuzzTarget t, std::span<const std::uint8_t> bytes, std::ostream& o
     }
     return;
   }
-  if (const auto* c = std::get_if<MeshIoCase>(&*decoded)) {
-    out << "# fuzz_mesh_io: " << c->bytes.size() << " bytes, format "
-        << (c->formatHint.empty() ? "detected from the content" : c->formatHint) << "\n";
-    int lines = 0;
-    std::string line;
-    for (std::size_t i = 0; i <= c->bytes.size() && lines < 40; ++i) {
-      if (i == c->bytes.size() || c->bytes[i] == '\n') {
-        out << "| " << line << "\n";
-        line.clear();
-        ++lines;
-        continue;
-      }
-      const unsigned char ch = c->bytes[i];
-      if (ch >= 32 && ch < 127) {
-        line += static_cast<char>(ch);
-      } else {
-        char buf[8];
-        std::snprintf(buf, sizeof buf, "\\x%02x", ch);
-        line += buf;
-      }
-    }
-    if (lines == 40) out << "| ...\n";
-  } else if (const auto* c = std::get_if<PredicateCase>(&*decoded)) {
-    const LocalWindow& w = c->window;
-    out << "# fuzz_predicates: a window on e0 = v0v2 propagated across the face v0 v1 v2 (Fig. 3 frame)\n"
-        << "edge-length " << w.edgeLength << "\n"
-        << "apex " << w.apex.x() << " " << w.apex.y() << "\n"
-        << "window " << w.b0 << " " << w.b1 << "\n"
-        << "source " << w.source.x() << " " << w.source.y() << "\n"
-        << "# local scale " << localScale(w) << "; v0 = (0, 0), v2 = (" << w.edgeLength << ", 0)\n";
-    const LocalPropagation r = propagateLocal(w);
-    out << "# propagateLocal: " << describeResult(r) << "\n";
-    const ExactFig6 e = exactFig6(w);
-    out << "# exact tree: " << (e.branch ? std::string(name(*e.branch)) : "undecided, near " + e.nearWhat) << "\n";
-  } else if (const auto* c = std::get_if<EdgeUpdateCase>(&*decoded)) {
-    out << "# fuzz_edge_update: Algorithm 2 merges the incoming interval into the edge's list\n";
-    if (!c->note.empty()) out << "# " << c->note << "\n";
-    out << "edge-length " << c->edgeLength << "\n";
-    for (const Interval& w : c->before) out << "before   " << describeInterval(w) << "\n";
-    out << "incoming " << describeInterval(c->incoming) << "\n";
-  } else if (const auto* c = std::get_if<PropagationCase>(&*decoded)) {
-    const Interval& w = c->window;
-    out << "# fuzz_propagation: an interval on e0 = v0v2 propagated across the face v0 v1 v2\n"
-        << "v0 " << c->face[0].transpose() << "\nv2 " << c->face[1].transpose() << "\nv1 "
-        << c->face[2].transpose() << "\n"
-        << "window " << w.b0 << " " << w.b1 << "\n"
-        << "source " << w.source.x() << " " << w.source.y() << "   # in e0's frame, y on the far side from v1\n"
-        << "sigma " << w.sigma << "\n"
-        << "e1 " << (c->e1Forward ? "v0->v1" : "v1->v0") << "\ne2 " << (c->e2Forward ? "v1->v2" : "v2->v1") << "\n";
-    const LocalWindow local = localWindowOf(*c);
-    out << "# local frame: " << describeLocal(local) << "; local scale " << localScale(local) << "\n";
-    const LocalPropagation r = propagateLocal(local);
-    out << "# propagateLocal: " << describeResult(r) << "\n";
-    const ExactFig6 e = exactFig6(local);
-    out << "# exact tree: " << (e.branch ? std::string(name(*e.branch)) : "undecided, near " + e.nearWhat) << "\n";
-    for (int i = 0; i < r.numChildren; ++i) {
-      const ChildInterval made = childIntervalOf(*c, local, r.children[i]);
-      out << "# childInterval e" << int(r.children[i].edge) << (childEdgeOf(*c, r.children[i].edge).forward ? "" : " (backward)") << ": "
-          << (made.outcome == ChildOutcome::Made ? describeInterval(made.interval)
-              : made.outcome == ChildOutcome::Empty ? std::string("empty")
-                                                    : std::string("dropped: the source is seen from outside the face"))
-          << "\n";
-    }
-  } else if (const auto* c = std::get_if<TwoFaceCase>(&*decoded)) {
-    out << "# fuzz_two_faces: faces B (0) and A (1) share the edge 0-1\n"
-        << describeSoup(c->soup) << "source " << formatSurfacePoint(c->source) << "\n";
-  } else if (const auto* c = std::get_if<SolverCase>(&*decoded)) {
-    out << "# fuzz_solver: " << c->soup.faces.size() << " faces"
-        << (c->rectangle ? ", planar rectangle" : c->planar ? ", planar" : "") << "\n"
-        << describeSoup(c->soup);
-    for (const SurfacePoint& s : c->sources) out << "source " << formatSurfacePoint(s) << "\n";
-    if (c->stopDistance) out << "stop-distance " << *c->stopDistance << "\n";
-    if (c->checkSymmetry) out << "check-symmetry\n";
-  }
+  std::visit([&](const auto& c) { describe(c, out); }, *decoded);
 }
 
 // ===  SVG =======================================================================================
 
-namespace {
-
 /// The face unfolded onto e0's frame with the window, its wedge and propagateLocal's ranges (as
 /// fuzz_predicates draws them), and childInterval's intervals in the footer.
-void svgPropagation(const PropagationCase& c, std::ostream& out) {
+void writeSvg(const PropagationCase& c, std::ostream& out) {
   const LocalWindow w = localWindowOf(c);
   const LocalPropagation r = propagateLocal(w);
   std::ostringstream os;
@@ -1591,7 +1636,7 @@ void svgPropagation(const PropagationCase& c, std::ostream& out) {
   svgLocalWindow(w, out, "fuzz_propagation", os.str());
 }
 
-void svgEdgeUpdate(const EdgeUpdateCase& c, std::ostream& out) {
+void writeSvg(const EdgeUpdateCase& c, std::ostream& out) {
   EdgeIntervals list;
   list.assign(c.before);
   EdgeUpdateReport report;
@@ -1658,7 +1703,7 @@ void svgEdgeUpdate(const EdgeUpdateCase& c, std::ostream& out) {
   doc.write(out);
 }
 
-void svgTwoFaces(const TwoFaceCase& c, std::ostream& out) {
+void writeSvg(const TwoFaceCase& c, std::ostream& out) {
   const auto& P3 = c.soup.positions;
   // Unfold: v0 at the origin, v2 on +x, v1 (face B) above, w (face A) below.
   const Vec3 o = P3[0], dir = (P3[1] - o).normalized();
@@ -1722,7 +1767,30 @@ void svgTwoFaces(const TwoFaceCase& c, std::ostream& out) {
   doc.write(out);
 }
 
-}  // namespace
+void writeSvg(const PredicateCase& c, std::ostream& out) { svgLocalWindow(c.window, out); }
+
+void writeSvg(const SolverCase& c, std::ostream& out) {
+  std::vector<Vec3> sources;
+  for (const SurfacePoint& s : c.sources) sources.push_back(surfacePointPosition(c.soup, s));
+  std::vector<double> d;
+  try {
+    const Mesh mesh(c.soup);
+    d = exactGeodesicDistance(mesh, c.sources);
+  } catch (const std::exception&) {
+  }
+  svgMesh(c.soup, sources, d, "fuzz_solver: vertex: distance", out);
+}
+
+void writeSvg(const MeshIoCase& c, std::ostream& out) {
+  try {
+    const MeshReadResult r = readMeshFromMemory(c.bytes, "fuzz-input", c.formatHint);
+    svgMesh(r.soup, {}, {}, "fuzz_mesh_io: the mesh read", out);
+  } catch (const std::exception& e) {
+    SvgDoc doc(900, 60);
+    doc.labelPx(10, 30, std::string("fuzz_mesh_io: not a mesh: ") + e.what(), 12);
+    doc.write(out);
+  }
+}
 
 void writeSvg(FuzzTarget t, std::span<const std::uint8_t> bytes, std::ostream& out) {
   const auto decoded = decode(t, bytes);
@@ -1733,30 +1801,7 @@ void writeSvg(FuzzTarget t, std::span<const std::uint8_t> bytes, std::ostream& o
     doc.write(out);
     return;
   }
-  if (const auto* c = std::get_if<PredicateCase>(&*decoded)) return svgLocalWindow(c->window, out);
-  if (const auto* c = std::get_if<EdgeUpdateCase>(&*decoded)) return svgEdgeUpdate(*c, out);
-  if (const auto* c = std::get_if<PropagationCase>(&*decoded)) return svgPropagation(*c, out);
-  if (const auto* c = std::get_if<TwoFaceCase>(&*decoded)) return svgTwoFaces(*c, out);
-  if (const auto* c = std::get_if<SolverCase>(&*decoded)) {
-    std::vector<Vec3> sources;
-    for (const SurfacePoint& s : c->sources) sources.push_back(surfacePointPosition(c->soup, s));
-    std::vector<double> d;
-    try {
-      const Mesh mesh(c->soup);
-      d = exactGeodesicDistance(mesh, c->sources);
-    } catch (const std::exception&) {
-    }
-    return svgMesh(c->soup, sources, d, "fuzz_solver: vertex: distance", out);
-  }
-  const auto& m = std::get<MeshIoCase>(*decoded);
-  try {
-    const MeshReadResult r = readMeshFromMemory(m.bytes, "fuzz-input", m.formatHint);
-    return svgMesh(r.soup, {}, {}, "fuzz_mesh_io: the mesh read", out);
-  } catch (const std::exception& e) {
-    SvgDoc doc(900, 60);
-    doc.labelPx(10, 30, std::string("fuzz_mesh_io: not a mesh: ") + e.what(), 12);
-    doc.write(out);
-  }
+  std::visit([&](const auto& c) { writeSvg(c, out); }, *decoded);
 }
 
 // ===  runRepro ==================================================================================

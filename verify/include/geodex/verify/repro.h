@@ -224,6 +224,27 @@ struct SolverCase {
 using FuzzCase =
     std::variant<MeshIoCase, PredicateCase, EdgeUpdateCase, PropagationCase, TwoFaceCase, SolverCase>;
 
+/// Each target's decoder, description and picture, which decode, describe and writeSvg below
+/// dispatch to.
+std::optional<MeshIoCase> decodeMeshIo(std::span<const std::uint8_t> bytes);
+std::optional<PredicateCase> decodePredicates(std::span<const std::uint8_t> bytes);
+std::optional<EdgeUpdateCase> decodeEdgeUpdate(std::span<const std::uint8_t> bytes);
+std::optional<PropagationCase> decodePropagation(std::span<const std::uint8_t> bytes);
+std::optional<TwoFaceCase> decodeTwoFaces(std::span<const std::uint8_t> bytes);
+std::optional<SolverCase> decodeSolver(std::span<const std::uint8_t> bytes);
+void describe(const MeshIoCase& c, std::ostream& out);
+void describe(const PredicateCase& c, std::ostream& out);
+void describe(const EdgeUpdateCase& c, std::ostream& out);
+void describe(const PropagationCase& c, std::ostream& out);
+void describe(const TwoFaceCase& c, std::ostream& out);
+void describe(const SolverCase& c, std::ostream& out);
+void writeSvg(const MeshIoCase& c, std::ostream& out);
+void writeSvg(const PredicateCase& c, std::ostream& out);
+void writeSvg(const EdgeUpdateCase& c, std::ostream& out);
+void writeSvg(const PropagationCase& c, std::ostream& out);
+void writeSvg(const TwoFaceCase& c, std::ostream& out);
+void writeSvg(const SolverCase& c, std::ostream& out);
+
 /// The case the bytes describe, or nullopt when the target skips them (too long, or a shape the
 /// target does not test: a degenerate range, a mesh the validator refuses, an invalid old list).
 std::optional<FuzzCase> decode(FuzzTarget t, std::span<const std::uint8_t> bytes);
