@@ -2,7 +2,8 @@
 // the format is detected from the content) → a soup, or geodex::InputError and nothing else.
 // validateMesh never throws; a soup it finds no error in builds a Mesh (edges of positive
 // length, corner angles in [0, π] summing to π per face) and, written back as OFF with 17
-// digits, reads back as the same soup. See verify::checkMeshIo.
+// digits, reads back as the same soup.
+// Format and check: verify/include/geodex/verify/cases/fuzz_mesh_io.h.
 #include "decode.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

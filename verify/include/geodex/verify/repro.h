@@ -14,9 +14,7 @@
 // or all of it in one call: `return runRepro(path, target, svgPath, std::cout);`.
 //
 // Targets and what each checks (docs/fuzzing.md has the byte layouts):
-//   fuzz_mesh_io      bytes → readMeshFromMemory → a soup or InputError (nothing else escapes);
-//                     validateMesh never throws; a soup without errors builds a Mesh (corner
-//                     angles in [0, π] summing to π) and round-trips through OFF exactly.
+//   fuzz_mesh_io      cases/fuzz_mesh_io.h
 //   fuzz_predicates   a LocalWindow on a lattice, nudged by multiples of the tolerances →
 //                     propagateLocal: the branch equals the exactly evaluated (GMP rationals)
 //                     Fig. 6 tree wherever each predicate on the path is clearly decided (its
@@ -68,6 +66,7 @@
 #include "geodex/propagate.h"
 #include "geodex/surface_point.h"
 #include "geodex/verify/cases/byte_codec.h"
+#include "geodex/verify/cases/fuzz_mesh_io.h"
 #include "geodex/verify/cases/fuzz_target.h"
 #include "geodex/verify/cases/source_spec.h"
 
@@ -76,7 +75,6 @@ namespace geodex::verify {
 // === Work caps =================================================================================
 // The fuzzing budget: the library has no fuzzing switch; the decoders cap what a case may ask for.
 
-inline constexpr std::size_t kMaxMeshIoInputBytes = 1u << 16;  ///< fuzz_mesh_io
 inline constexpr int kMaxFuzzFaces = 64;          ///< fuzz_solver meshes
 inline constexpr int kMaxFuzzGridCells = 32;      ///< fuzz_solver grids: 2 faces per cell
 inline constexpr int kMaxFuzzSoupPoints = 24;     ///< fuzz_solver lattice soups
@@ -184,10 +182,6 @@ std::vector<std::uint8_t> encode(const SolverSpec& s);
 
 // === Cases: decoded inputs =====================================================================
 
-struct MeshIoCase {
-  std::string bytes;       ///< the file, without the format byte
-  std::string formatHint;  ///< "" (detect), "off", "obj" or "ply": a first byte 1, 2 or 3 says
-};
 struct PredicateCase {
   LocalWindow window;
 };
@@ -226,19 +220,16 @@ using FuzzCase =
 
 /// Each target's decoder, description and picture, which decode, describe and writeSvg below
 /// dispatch to.
-std::optional<MeshIoCase> decodeMeshIo(std::span<const std::uint8_t> bytes);
 std::optional<PredicateCase> decodePredicates(std::span<const std::uint8_t> bytes);
 std::optional<EdgeUpdateCase> decodeEdgeUpdate(std::span<const std::uint8_t> bytes);
 std::optional<PropagationCase> decodePropagation(std::span<const std::uint8_t> bytes);
 std::optional<TwoFaceCase> decodeTwoFaces(std::span<const std::uint8_t> bytes);
 std::optional<SolverCase> decodeSolver(std::span<const std::uint8_t> bytes);
-void describe(const MeshIoCase& c, std::ostream& out);
 void describe(const PredicateCase& c, std::ostream& out);
 void describe(const EdgeUpdateCase& c, std::ostream& out);
 void describe(const PropagationCase& c, std::ostream& out);
 void describe(const TwoFaceCase& c, std::ostream& out);
 void describe(const SolverCase& c, std::ostream& out);
-void writeSvg(const MeshIoCase& c, std::ostream& out);
 void writeSvg(const PredicateCase& c, std::ostream& out);
 void writeSvg(const EdgeUpdateCase& c, std::ostream& out);
 void writeSvg(const PropagationCase& c, std::ostream& out);
@@ -263,7 +254,6 @@ bool isEdgeUpdateReproducer(std::span<const std::uint8_t> bytes);
 Verdict check(const FuzzCase& c);
 
 /// The per-target checks `check` dispatches to.
-Verdict checkMeshIo(const MeshIoCase& c);
 Verdict checkPredicates(const PredicateCase& c);
 Verdict checkEdgeUpdate(const EdgeUpdateCase& c);
 Verdict checkPropagation(const PropagationCase& c);

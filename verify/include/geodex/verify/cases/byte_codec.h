@@ -16,8 +16,9 @@
 
 namespace geodex::verify {
 
-/// The binary targets' input cap: longer inputs are skipped, so that a fuzzer's time goes to
-/// many small cases (fuzz_mesh_io has its own, kMaxMeshIoInputBytes).
+/// The binary targets' input cap: longer inputs are skipped. The decoders cap what a case may ask
+/// for, so that every input runs in bounded time (the fuzzing budget, docs/fuzzing.md);
+/// fuzz_mesh_io has its own cap, kMaxMeshIoInputBytes.
 inline constexpr std::size_t kMaxFuzzInputBytes = 4096;
 
 // === Quantity ===================================================================================
