@@ -4,7 +4,8 @@
 // rationals) wherever every predicate on the path is clearly decided; the children's ranges lie
 // in [0, 1] with t0 <= t1; every sampled ray of the wedge leaves the face inside a child
 // (coverage) and every child point is seen from s through [b0, b1] (soundness), up to 100× the
-// tolerances' angle. See verify::checkPredicates.
+// tolerances' angle.
+// Format and check: verify/include/geodex/verify/cases/fuzz_predicates.h.
 #include "decode.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -15,13 +15,7 @@
 //
 // Targets and what each checks (docs/fuzzing.md has the byte layouts):
 //   fuzz_mesh_io      cases/fuzz_mesh_io.h
-//   fuzz_predicates   a LocalWindow on a lattice, nudged by multiples of the tolerances →
-//                     propagateLocal: the branch equals the exactly evaluated (GMP rationals)
-//                     Fig. 6 tree wherever each predicate on the path is clearly decided (its
-//                     value ≤ ε/10 or ≥ 11 ε); children's ranges in [0, 1], t0 ≤ t1; every ray of
-//                     the wedge that enters the face leaves it inside a child (coverage) and
-//                     every child point is seen from s through [b0, b1] (soundness), up to an
-//                     angle of 100 × the tolerances.
+//   fuzz_predicates   cases/fuzz_predicates.h
 //   fuzz_edge_update  a valid interval list and an incoming interval → EdgeIntervals::insert:
 //                     the cheap step-6 invariants and the pointwise-min property
 //                     (InvariantChecker, full tier), no pseudo-source invented, ids unique,
@@ -67,6 +61,7 @@
 #include "geodex/surface_point.h"
 #include "geodex/verify/cases/byte_codec.h"
 #include "geodex/verify/cases/fuzz_mesh_io.h"
+#include "geodex/verify/cases/fuzz_predicates.h"
 #include "geodex/verify/cases/fuzz_target.h"
 #include "geodex/verify/cases/source_spec.h"
 
@@ -85,16 +80,6 @@ inline constexpr int kMaxFuzzOldIntervals = 8;    ///< fuzz_edge_update list bef
 // Each target's input is one spec, written field by field in the order below. The world's
 // lattice unit is 2^unitExp (unitExp wrapped into [−20, 20]), so every case also runs scaled.
 // Ranges are in lattice units; "nL" is the edge length's lattice value rounded up.
-
-/// fuzz_predicates: the local configuration of Fig. 3 (propagate.h).
-struct PredicateSpec {
-  std::int8_t unitExp = 0;
-  Quantity edgeLength;       ///< L ∈ [1, 64]; nudges relative to the lattice length
-  Quantity apexX, apexY;     ///< v1: x ∈ [−2 nL, 3 nL], y ∈ [0, 2 nL] (|y| taken)
-  Quantity b0, b1;           ///< ∈ [0, nL], swapped if reversed, clamped to [0, L]
-  Quantity sourceX, sourceY; ///< s: x ∈ [−4 nL, 5 nL], y ∈ [−4 nL, 0] (−|y| taken)
-  // Nudges of every field are relative to L.
-};
 
 /// One interval of fuzz_edge_update.
 struct IntervalSpec {
@@ -174,7 +159,6 @@ struct SolverSpec {
   Quantity stop;  ///< ∈ [0, 64] lattice units
 };
 
-std::vector<std::uint8_t> encode(const PredicateSpec& s);
 std::vector<std::uint8_t> encode(const EdgeUpdateSpec& s);
 std::vector<std::uint8_t> encode(const PropagationSpec& s);
 std::vector<std::uint8_t> encode(const TwoFaceSpec& s);
@@ -182,9 +166,6 @@ std::vector<std::uint8_t> encode(const SolverSpec& s);
 
 // === Cases: decoded inputs =====================================================================
 
-struct PredicateCase {
-  LocalWindow window;
-};
 struct EdgeUpdateCase {
   double edgeLength = 0.0;
   std::vector<Interval> before;  ///< ids 1..n
@@ -220,17 +201,14 @@ using FuzzCase =
 
 /// Each target's decoder, description and picture, which decode, describe and writeSvg below
 /// dispatch to.
-std::optional<PredicateCase> decodePredicates(std::span<const std::uint8_t> bytes);
 std::optional<EdgeUpdateCase> decodeEdgeUpdate(std::span<const std::uint8_t> bytes);
 std::optional<PropagationCase> decodePropagation(std::span<const std::uint8_t> bytes);
 std::optional<TwoFaceCase> decodeTwoFaces(std::span<const std::uint8_t> bytes);
 std::optional<SolverCase> decodeSolver(std::span<const std::uint8_t> bytes);
-void describe(const PredicateCase& c, std::ostream& out);
 void describe(const EdgeUpdateCase& c, std::ostream& out);
 void describe(const PropagationCase& c, std::ostream& out);
 void describe(const TwoFaceCase& c, std::ostream& out);
 void describe(const SolverCase& c, std::ostream& out);
-void writeSvg(const PredicateCase& c, std::ostream& out);
 void writeSvg(const EdgeUpdateCase& c, std::ostream& out);
 void writeSvg(const PropagationCase& c, std::ostream& out);
 void writeSvg(const TwoFaceCase& c, std::ostream& out);
@@ -254,7 +232,6 @@ bool isEdgeUpdateReproducer(std::span<const std::uint8_t> bytes);
 Verdict check(const FuzzCase& c);
 
 /// The per-target checks `check` dispatches to.
-Verdict checkPredicates(const PredicateCase& c);
 Verdict checkEdgeUpdate(const EdgeUpdateCase& c);
 Verdict checkPropagation(const PropagationCase& c);
 Verdict checkTwoFaces(const TwoFaceCase& c);

@@ -95,8 +95,10 @@ class ByteWriter {
 };
 
 // === Field values: what a Quantity stands for ===================================================
-// Ranges are in lattice units; a field of a case in world units is
-// latticeValue × unit + nudgeValue (fieldValue). The specs' comments give each field's range.
+// Every spec starts with unitExp: its lattice unit is unitOf(unitExp), so every case also runs
+// scaled. A field in world units is latticeValue × unit + nudgeValue (fieldValue); the specs'
+// comments give each field's range in lattice units, where "nL" is the lattice extent of the
+// case's edge length (edgeLengthOf).
 
 /// v wrapped into [lo, hi].
 int wrapInt(long v, long lo, long hi);
