@@ -16,11 +16,7 @@
 // Targets and what each checks (docs/fuzzing.md has the byte layouts):
 //   fuzz_mesh_io      cases/fuzz_mesh_io.h
 //   fuzz_predicates   cases/fuzz_predicates.h
-//   fuzz_edge_update  a valid interval list and an incoming interval → EdgeIntervals::insert:
-//                     the cheap step-6 invariants and the pointwise-min property
-//                     (InvariantChecker, full tier), no pseudo-source invented, ids unique,
-//                     every id to queue present. Also reads the text reproducers of
-//                     writeReproducer ("geodex-edge-update 1").
+//   fuzz_edge_update  cases/fuzz_edge_update.h
 //   fuzz_propagation  one 3-D face (lattice positions nudged by the tolerances: needles,
 //                     zero-area faces, collinear sources are common) and one interval on its edge
 //                     v0v2 → the solver's one propagation step (propagateLocal, childInterval):
@@ -60,6 +56,7 @@
 #include "geodex/propagate.h"
 #include "geodex/surface_point.h"
 #include "geodex/verify/cases/byte_codec.h"
+#include "geodex/verify/cases/fuzz_edge_update.h"
 #include "geodex/verify/cases/fuzz_mesh_io.h"
 #include "geodex/verify/cases/fuzz_predicates.h"
 #include "geodex/verify/cases/fuzz_target.h"
@@ -74,35 +71,11 @@ inline constexpr int kMaxFuzzFaces = 64;          ///< fuzz_solver meshes
 inline constexpr int kMaxFuzzGridCells = 32;      ///< fuzz_solver grids: 2 faces per cell
 inline constexpr int kMaxFuzzSoupPoints = 24;     ///< fuzz_solver lattice soups
 inline constexpr int kMaxFuzzSources = 3;
-inline constexpr int kMaxFuzzOldIntervals = 8;    ///< fuzz_edge_update list before the update
 
 // === Specs: a case as its bytes describe it ====================================================
 // Each target's input is one spec, written field by field in the order below. The world's
 // lattice unit is 2^unitExp (unitExp wrapped into [−20, 20]), so every case also runs scaled.
 // Ranges are in lattice units; "nL" is the edge length's lattice value rounded up.
-
-/// One interval of fuzz_edge_update.
-struct IntervalSpec {
-  Quantity start;   ///< old intervals: the gap before it (∈ [0, nL]); incoming: b0 ∈ [0, nL]
-  Quantity extent;  ///< old intervals: its length (∈ [0, nL]); incoming: b1 ∈ [0, nL]
-  Quantity sourceX, sourceY;  ///< x ∈ [−2 nL, 3 nL], y ∈ [0, 2 nL] (|y| taken)
-  Quantity sigma;             ///< σ ∈ [0, 4 nL] (|σ| taken)
-  /// bit 0: side τ; bits 1–2: propagated part (none, all, first half, second half);
-  /// bit 3: source = that of interval `ref` + (sourceX, sourceY) read as offsets ∈ [−nL, nL];
-  /// bit 4: σ = that of interval `ref` + sigma read as an offset ∈ [−nL, nL].
-  std::uint8_t flags = 0;
-  std::uint8_t ref = 0;  ///< which earlier old interval (mod their count) bits 3–4 refer to
-};
-
-/// fuzz_edge_update: an edge's list before Algorithm 2 and the incoming interval. Old intervals
-/// are laid out left to right (gap, length, gap, length, …) and cut at L; a list the cheap
-/// invariants reject is not a valid starting point and the case is skipped.
-struct EdgeUpdateSpec {
-  std::int8_t unitExp = 0;
-  Quantity edgeLength;  ///< L ∈ [1, 64]
-  std::vector<IntervalSpec> before;  ///< count byte mod (kMaxFuzzOldIntervals + 1)
-  IntervalSpec incoming;
-};
 
 /// fuzz_propagation: one face and one interval on its edge e0 = v0v2. The source is given in the
 /// interval's frame on e0 (x from v0, y >= 0 its height on the far side of e0 from v1).
@@ -159,19 +132,12 @@ struct SolverSpec {
   Quantity stop;  ///< ∈ [0, 64] lattice units
 };
 
-std::vector<std::uint8_t> encode(const EdgeUpdateSpec& s);
 std::vector<std::uint8_t> encode(const PropagationSpec& s);
 std::vector<std::uint8_t> encode(const TwoFaceSpec& s);
 std::vector<std::uint8_t> encode(const SolverSpec& s);
 
 // === Cases: decoded inputs =====================================================================
 
-struct EdgeUpdateCase {
-  double edgeLength = 0.0;
-  std::vector<Interval> before;  ///< ids 1..n
-  Interval incoming;             ///< id n + 1
-  std::string note;              ///< where it came from (a text reproducer's invariant, branch)
-};
 struct PropagationCase {
   std::array<Vec3, 3> face;  ///< v0, v2, v1: the window's edge e0 = v0v2 and the apex
   /// On e0 (x from v0): b0 < b1 within [0, |v0v2|], the pseudo-source with y >= 0 on the far
@@ -201,15 +167,12 @@ using FuzzCase =
 
 /// Each target's decoder, description and picture, which decode, describe and writeSvg below
 /// dispatch to.
-std::optional<EdgeUpdateCase> decodeEdgeUpdate(std::span<const std::uint8_t> bytes);
 std::optional<PropagationCase> decodePropagation(std::span<const std::uint8_t> bytes);
 std::optional<TwoFaceCase> decodeTwoFaces(std::span<const std::uint8_t> bytes);
 std::optional<SolverCase> decodeSolver(std::span<const std::uint8_t> bytes);
-void describe(const EdgeUpdateCase& c, std::ostream& out);
 void describe(const PropagationCase& c, std::ostream& out);
 void describe(const TwoFaceCase& c, std::ostream& out);
 void describe(const SolverCase& c, std::ostream& out);
-void writeSvg(const EdgeUpdateCase& c, std::ostream& out);
 void writeSvg(const PropagationCase& c, std::ostream& out);
 void writeSvg(const TwoFaceCase& c, std::ostream& out);
 void writeSvg(const SolverCase& c, std::ostream& out);
@@ -217,11 +180,6 @@ void writeSvg(const SolverCase& c, std::ostream& out);
 /// The case the bytes describe, or nullopt when the target skips them (too long, or a shape the
 /// target does not test: a degenerate range, a mesh the validator refuses, an invalid old list).
 std::optional<FuzzCase> decode(FuzzTarget t, std::span<const std::uint8_t> bytes);
-
-/// The text reproducer of writeReproducer ("geodex-edge-update 1"). Throws InputError when the
-/// text is not one.
-EdgeUpdateCase parseEdgeUpdateReproducer(std::string_view text);
-bool isEdgeUpdateReproducer(std::span<const std::uint8_t> bytes);
 
 // === Checks ====================================================================================
 
@@ -232,7 +190,6 @@ bool isEdgeUpdateReproducer(std::span<const std::uint8_t> bytes);
 Verdict check(const FuzzCase& c);
 
 /// The per-target checks `check` dispatches to.
-Verdict checkEdgeUpdate(const EdgeUpdateCase& c);
 Verdict checkPropagation(const PropagationCase& c);
 Verdict checkTwoFaces(const TwoFaceCase& c);
 Verdict checkSolver(const SolverCase& c);

@@ -31,9 +31,10 @@ struct Verdict {
   /// Empty when every check passed; else the name of the first broken check: an invariant of
   /// InvariantChecker ("pointwise-min", …), an oracle ("euclidean-lower-bound", "upper-bound",
   /// "lipschitz", "planar-agreement", "two-face-distance", "unfolding", "path-length",
-  /// "stop-distance", "symmetry", "edge-query"), "exact-predicates", "child-range", "coverage",
-  /// "soundness", "invented-source", "ids", "unexpected-exception", "validated-mesh-refused",
-  /// "round-trip", "mesh-geometry", "internal-check".
+  /// "stop-distance", "symmetry", "edge-query", "distance-values"), "exact-predicates",
+  /// "scale-invariance", "child-range", "coverage", "soundness", "invented-source", "slice",
+  /// "unexpected-exception", "validated-mesh-refused", "soup-shape", "round-trip",
+  /// "mesh-geometry", "internal-check".
   std::string failed;
   std::string message;  ///< what broke, with the numbers
   std::string summary;  ///< one line on what the case exercised

@@ -1,0 +1,429 @@
+// fuzz_edge_update: one Algorithm 2 update (fuzz_edge_update.h).
+#include "geodex/verify/cases/fuzz_edge_update.h"
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+#include <string>
+
+#include "check_support.h"
+#include "geodex/edge_intervals.h"
+#include "geodex/error.h"
+#include "geodex/mesh.h"
+#include "geodex/verify/invariant_checker.h"
+#include "svg.h"
+
+namespace geodex::verify {
+
+using namespace detail;
+
+// ===  Format ====================================================================================
+
+namespace {
+
+IntervalSpec readIntervalSpec(ByteReader& r) {
+  IntervalSpec s;
+  s.start = r.quantity();
+  s.extent = r.quantity();
+  s.sourceX = r.quantity();
+  s.sourceY = r.quantity();
+  s.sigma = r.quantity();
+  s.flags = r.u8();
+  s.ref = r.u8();
+  return s;
+}
+
+void writeIntervalSpec(ByteWriter& w, const IntervalSpec& s) {
+  w.quantity(s.start);
+  w.quantity(s.extent);
+  w.quantity(s.sourceX);
+  w.quantity(s.sourceY);
+  w.quantity(s.sigma);
+  w.u8(s.flags);
+  w.u8(s.ref);
+}
+
+EdgeUpdateSpec readEdgeUpdateSpec(ByteReader& r) {
+  EdgeUpdateSpec s;
+  s.unitExp = r.i8();
+  s.edgeLength = r.quantity();
+  const int count = r.u8() % (kMaxFuzzOldIntervals + 1);
+  for (int i = 0; i < count; ++i) s.before.push_back(readIntervalSpec(r));
+  s.incoming = readIntervalSpec(r);
+  return s;
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> encode(const EdgeUpdateSpec& s) {
+  ByteWriter w;
+  w.i8(s.unitExp);
+  w.quantity(s.edgeLength);
+  GEODEX_REQUIRE(s.before.size() <= static_cast<std::size_t>(kMaxFuzzOldIntervals),
+                 "at most " << kMaxFuzzOldIntervals << " old intervals");
+  w.u8(static_cast<std::uint8_t>(s.before.size()));
+  for (const IntervalSpec& i : s.before) writeIntervalSpec(w, i);
+  writeIntervalSpec(w, s.incoming);
+  return w.bytes();
+}
+
+// ===  Decoding ==================================================================================
+
+namespace {
+
+Interval makeInterval(const IntervalSpec& s, bool incoming, double cursor, double L, long nL,
+                      double unit, const std::vector<Interval>& earlier, bool& ok) {
+  Interval w;
+  if (incoming) {
+    double b0 = fieldValue(s.start, 0, nL, unit, L), b1 = fieldValue(s.extent, 0, nL, unit, L);
+    if (b0 > b1) std::swap(b0, b1);
+    w.b0 = std::max(b0, 0.0);
+    w.b1 = std::min(b1, L);
+  } else {
+    w.b0 = cursor + std::abs(fieldValue(s.start, 0, nL, unit, L));
+    w.b1 = std::min(w.b0 + std::abs(fieldValue(s.extent, 0, nL, unit, L)), L);
+  }
+  ok = w.b0 < w.b1;
+  const Interval* ref = earlier.empty() ? nullptr : &earlier[s.ref % earlier.size()];
+  if ((s.flags & 8) != 0 && ref != nullptr) {
+    w.source = Vec2(ref->source.x() + fieldValue(s.sourceX, -nL, nL, unit, L),
+                    std::abs(ref->source.y() + fieldValue(s.sourceY, -nL, nL, unit, L)));
+  } else {
+    w.source = Vec2(fieldValue(s.sourceX, -2 * nL, 3 * nL, unit, L),
+                    std::abs(fieldValue(s.sourceY, 0, 2 * nL, unit, L)));
+  }
+  if ((s.flags & 16) != 0 && ref != nullptr) {
+    w.sigma = std::abs(ref->sigma + fieldValue(s.sigma, -nL, nL, unit, L));
+  } else {
+    w.sigma = std::abs(fieldValue(s.sigma, 0, 4 * nL, unit, L));
+  }
+  w.side = s.flags & 1;
+  w.origin = -1;
+  // 0: pending; 1: propagated; 2, 3 (a half propagated): pending, as an interval grown after its
+  // propagation is (an interval carries one pending bit).
+  if (((s.flags >> 1) & 3) == 1) w.markPropagated();
+  ok = ok && isFinite(w.source) && std::isfinite(w.sigma);
+  return w;
+}
+
+std::optional<EdgeUpdateCase> makeEdgeUpdateCase(const EdgeUpdateSpec& s) {
+  const double unit = unitOf(s.unitExp);
+  const auto [L, nL] = edgeLengthOf(s.edgeLength, unit);
+  if (!(L > 0.0)) return std::nullopt;
+  EdgeUpdateCase c;
+  c.edgeLength = L;
+  double cursor = 0.0;
+  for (const IntervalSpec& is : s.before) {
+    if (cursor >= L) break;
+    bool ok = false;
+    Interval w = makeInterval(is, false, cursor, L, nL, unit, c.before, ok);
+    if (w.b0 >= L) break;
+    cursor = w.b1;
+    if (!ok) continue;
+    c.before.push_back(w);
+  }
+  bool ok = false;
+  c.incoming = makeInterval(s.incoming, true, 0.0, L, nL, unit, c.before, ok);
+  c.incoming.origin = -2;
+  if (!ok) return std::nullopt;
+  // Algorithm 2 starts from a list step 6 accepts; a list it rejects tests nothing.
+  std::string why;
+  if (!InvariantChecker::checkList(c.before, L, why).empty()) return std::nullopt;
+  return c;
+}
+
+constexpr std::string_view kReproducerMagic = "geodex-edge-update 1";
+
+}  // namespace
+
+bool isEdgeUpdateReproducer(std::span<const std::uint8_t> bytes) {
+  const std::string_view text(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+  std::size_t pos = 0;
+  while (pos < text.size()) {
+    std::size_t end = text.find('\n', pos);
+    if (end == std::string_view::npos) end = text.size();
+    std::string_view line = text.substr(pos, end - pos);
+    while (!line.empty() && (line.back() == '\r' || line.back() == ' ')) line.remove_suffix(1);
+    pos = end + 1;
+    if (line.empty() || line.front() == '#') continue;
+    return line == kReproducerMagic;
+  }
+  return false;
+}
+
+EdgeUpdateCase parseEdgeUpdateReproducer(std::string_view text) {
+  EdgeUpdateCase c;
+  std::istringstream in{std::string(text)};
+  std::string line;
+  int lineNo = 0;
+  bool sawMagic = false, sawIncoming = false, sawLength = false;
+  std::string invariant, branch;
+  std::size_t announced = 0;
+  auto fail = [&](const std::string& what) -> void {
+    throw InputError("syntax", "line " + std::to_string(lineNo) + ": " + what);
+  };
+  auto readInterval = [&](std::istringstream& ls) {
+    Interval w;
+    double sx = 0, sy = 0;
+    int side = 0;
+    if (!(ls >> w.b0 >> w.b1 >> sx >> sy >> w.sigma >> side)) fail("expected b0 b1 sx sy sigma side");
+    w.source = Vec2(sx, sy);
+    w.side = static_cast<std::uint8_t>(side != 0);
+    return w;
+  };
+  while (std::getline(in, line)) {
+    ++lineNo;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.empty() || line.front() == '#') continue;
+    std::istringstream ls(line);
+    std::string key;
+    ls >> key;
+    if (!sawMagic) {
+      if (line != kReproducerMagic) fail("expected '" + std::string(kReproducerMagic) + "'");
+      sawMagic = true;
+    } else if (key == "invariant") {
+      ls >> invariant;
+    } else if (key == "branch") {
+      ls >> branch;
+    } else if (key == "edge-length") {
+      if (!(ls >> c.edgeLength)) fail("expected the edge length");
+      sawLength = true;
+    } else if (key == "before") {
+      if (!(ls >> announced)) fail("expected the number of intervals");
+    } else if (key == "interval") {
+      Interval w = readInterval(ls);
+      w.origin = -1;
+      c.before.push_back(w);
+    } else if (key == "incoming") {
+      c.incoming = readInterval(ls);
+      c.incoming.origin = -2;
+      sawIncoming = true;
+    } else {
+      fail("unknown key '" + key + "'");
+    }
+  }
+  if (!sawMagic) throw InputError("syntax", "not a geodex edge-update reproducer");
+  if (!sawLength || !sawIncoming) throw InputError("syntax", "edge-length or incoming missing");
+  if (announced != c.before.size()) {
+    throw InputError("syntax", "'before " + std::to_string(announced) + "' but " +
+                                   std::to_string(c.before.size()) + " interval lines");
+  }
+  c.note = "text reproducer: invariant " + invariant + ", branch " + branch;
+  return c;
+}
+
+std::optional<EdgeUpdateCase> decodeEdgeUpdate(std::span<const std::uint8_t> bytes) {
+  if (isEdgeUpdateReproducer(bytes)) {
+    try {
+      EdgeUpdateCase c = parseEdgeUpdateReproducer(
+          std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
+      // An incoming interval off the edge, or one no propagation makes, tests nothing: a
+      // negative or non-finite σ, a source off the unfolded side (y < 0) or not finite
+      // (regress/*-text-reproducer-with-an-invalid-incoming-interval-was-replayed).
+      if (!(c.edgeLength > 0.0) || !(c.incoming.b0 >= 0.0 && c.incoming.b1 <= c.edgeLength &&
+                                     c.incoming.b0 < c.incoming.b1))
+        return std::nullopt;
+      const Interval& in = c.incoming;
+      if (!(std::isfinite(in.sigma) && in.sigma >= 0.0 && std::isfinite(in.source.x()) &&
+            std::isfinite(in.source.y()) && in.source.y() >= 0.0))
+        return std::nullopt;
+      // As for the binary form: Algorithm 2 starts from a list step 6 accepts; a list it rejects
+      // (an interval past the edge's end, two overlapping) tests nothing.
+      std::string why;
+      if (!InvariantChecker::checkList(c.before, c.edgeLength, why).empty()) return std::nullopt;
+      return c;
+    } catch (const InputError&) {
+      return std::nullopt;
+    }
+  }
+  if (bytes.size() > kMaxFuzzInputBytes) return std::nullopt;
+  ByteReader r(bytes);
+  return makeEdgeUpdateCase(readEdgeUpdateSpec(r));
+}
+
+// ===  Check =====================================================================================
+
+namespace {
+
+bool sameFunction(const Interval& a, const Interval& b) {
+  return a.source == b.source && a.sigma == b.sigma && a.side == b.side && a.origin == b.origin;
+}
+
+/// The case in mesh units, as a mesh holding the edge would have it (MeshUnit): Algorithm 2
+/// computes σ + √((x − s.x)² + s.y²) and runs on the solver's lengths, never on a file's
+/// huge or tiny ones. Nullopt when a value would not scale exactly (it is or becomes subnormal,
+/// far below anything the solver keeps).
+std::optional<EdgeUpdateCase> inMeshUnits(const EdgeUpdateCase& c) {
+  const MeshUnit unit = meshUnitOf(c.edgeLength);
+  bool exact = true;
+  auto to = [&](double& x) {
+    exact = exact && scalesExactly(x, unit.inverse);
+    x *= unit.inverse;
+  };
+  EdgeUpdateCase m = c;
+  to(m.edgeLength);
+  auto scale = [&](Interval& w) {
+    to(w.b0), to(w.b1), to(w.source.x()), to(w.source.y()), to(w.sigma);
+  };
+  for (Interval& w : m.before) scale(w);
+  scale(m.incoming);
+  if (!exact) return std::nullopt;
+  return m;
+}
+
+}  // namespace
+
+Verdict checkEdgeUpdate(const EdgeUpdateCase& input) {
+  Verdict v;
+  const auto inUnits = inMeshUnits(input);
+  if (!inUnits) return v.summary = "a value would be subnormal in mesh units: outside the solver's range", v;
+  const EdgeUpdateCase& c = *inUnits;
+  // The list must be one step 6 accepts where Algorithm 2 works, in mesh units: its checks square
+  // lengths, which underflow for tiny ones, so a list can pass in one unit and not in the other.
+  if (std::string why; !InvariantChecker::checkList(c.before, c.edgeLength, why).empty())
+    return v.summary = "the list before breaks step 6 in mesh units: " + why, v;
+  v.interesting = true;
+  EdgeIntervals list;
+  list.assign(c.before);
+  EdgeUpdateReport report;
+  std::vector<Interval> scratch;
+  auto caseText = [&] {
+    std::ostringstream os;
+    os << std::setprecision(17) << "\n  edge length " << c.edgeLength;
+    for (const Interval& w : c.before) os << "\n  before   " << describeInterval(w);
+    os << "\n  incoming " << describeInterval(c.incoming);
+    for (const Interval& w : list.intervals()) os << "\n  after    " << describeInterval(w);
+    return os.str();
+  };
+  try {
+    list.insert(c.incoming, c.edgeLength, report, scratch);
+  } catch (const InternalError& e) {
+    return fail(v, "internal-check", e.what() + caseText());
+  } catch (const std::exception& e) {
+    return fail(v, "unexpected-exception", e.what() + caseText());
+  }
+  v.degeneracies += report.degeneracies;
+  {
+    std::ostringstream os;
+    os << c.before.size() << " → " << list.intervals().size() << " intervals;";
+    for (std::size_t k = static_cast<std::size_t>(DegeneracyKind::D1); k < kNumDegeneracyKinds; ++k)
+      if (report.degeneracies.count[k] != 0)
+        os << " " << name(static_cast<DegeneracyKind>(k)) << "×" << report.degeneracies.count[k];
+    v.summary = os.str();
+  }
+  const auto after = list.intervals();
+  // Step 6: the cheap invariants and the pointwise minimum (the full tier), as the checker runs
+  // them inside the solver.
+  try {
+    InvariantChecker checker(CheckLevel::Full, true);
+    checker.onEdgeUpdate({0, c.edgeLength, c.before, c.incoming, after, report, nullptr});
+  } catch (const InvariantViolation& e) {
+    return fail(v, e.invariant(), e.what() + caseText());
+  }
+  // No pseudo-source invented: every interval after is a piece of one of the functions before.
+  for (const Interval& w : after) {
+    bool known = sameFunction(w, c.incoming);
+    for (const Interval& b : c.before) known = known || sameFunction(w, b);
+    if (!known) return fail(v, "invented-source", "interval " + describeInterval(w) + " has a source no input had" + caseText());
+  }
+  // Only the slice the report names was rewritten: before and after it the list is the old one,
+  // interval for interval (what makes an update cost O(log n + overlap)).
+  const auto same = [](const Interval& a, const Interval& b) {
+    return a.b0 == b.b0 && a.b1 == b.b1 && a.source == b.source && a.sigma == b.sigma &&
+           a.side == b.side && a.origin == b.origin && a.pending() == b.pending();
+  };
+  if (report.first > report.last || report.last > after.size() ||
+      after.size() - report.last > c.before.size() || report.first > c.before.size()) {
+    return fail(v, "slice", "the rewritten range [" + std::to_string(report.first) + ", " +
+                                std::to_string(report.last) + ") does not fit the lists" + caseText());
+  }
+  for (std::size_t i = 0; i < report.first; ++i)
+    if (!same(after[i], c.before[i]))
+      return fail(v, "slice", "interval " + std::to_string(i) + " before the rewritten range changed" + caseText());
+  const std::size_t tail = after.size() - report.last;
+  for (std::size_t i = 0; i < tail; ++i)
+    if (!same(after[report.last + i], c.before[c.before.size() - tail + i]))
+      return fail(v, "slice", "interval " + std::to_string(report.last + i) + " after the rewritten range changed" + caseText());
+  return v;
+}
+
+// ===  Description and picture ===================================================================
+
+void describe(const EdgeUpdateCase& c, std::ostream& out) {
+  out << std::setprecision(17);
+  out << "# fuzz_edge_update: Algorithm 2 merges the incoming interval into the edge's list\n";
+  if (!c.note.empty()) out << "# " << c.note << "\n";
+  out << "edge-length " << c.edgeLength << "\n";
+  for (const Interval& w : c.before) out << "before   " << describeInterval(w) << "\n";
+  out << "incoming " << describeInterval(c.incoming) << "\n";
+}
+
+void writeSvg(const EdgeUpdateCase& c, std::ostream& out) {
+  EdgeIntervals list;
+  list.assign(c.before);
+  EdgeUpdateReport report;
+  std::vector<Interval> scratch;
+  std::string error;
+  try {
+    list.insert(c.incoming, c.edgeLength, report, scratch);
+  } catch (const std::exception& e) {
+    error = e.what();
+  }
+  const std::vector<Interval> after(list.intervals().begin(), list.intervals().end());
+  const double L = c.edgeLength;
+  double dmin = INFINITY, dmax = -INFINITY;
+  auto span = [&](const Interval& w) {
+    for (int k = 0; k <= 32; ++k) {
+      const double d = w.distanceAt(w.b0 + (w.b1 - w.b0) * k / 32);
+      dmin = std::min(dmin, d), dmax = std::max(dmax, d);
+    }
+  };
+  for (const Interval& w : c.before) span(w);
+  span(c.incoming);
+  for (const Interval& w : after) span(w);
+  SvgDoc doc(900, 900);
+  SourceColours colour;
+  const char* titles[] = {"before", "incoming", "after Algorithm 2"};
+  const std::vector<Interval> rows[] = {c.before, {c.incoming}, after};
+  for (int row = 0; row < 3; ++row) {
+    Panel P(60, 50 + row * 180, 820, 150, 0.0, dmin, L, dmax, false);
+    doc.line(P, Vec2(0, dmin), Vec2(L, dmin), "#999", 1);
+    doc.labelPx(10, 45 + row * 180, titles[row], 13);
+    doc.labelPx(5, 50 + row * 180 + 150, shortNum(dmin), 10, "#666");
+    doc.labelPx(5, 62 + row * 180, shortNum(dmax), 10, "#666");
+    for (const Interval& w : rows[row]) {
+      std::vector<Vec2> pts;
+      for (int k = 0; k <= 48; ++k) {
+        const double x = w.b0 + (w.b1 - w.b0) * k / 48;
+        pts.emplace_back(x, w.distanceAt(x));
+      }
+      doc.polyline(P, pts, colour(w), row == 2 ? 3 : 2, row == 1);
+      doc.line(P, Vec2(w.b0, dmin), Vec2(w.b1, dmin), colour(w), 5);
+    }
+  }
+  // The edge and the pseudo-sources (drawn below the edge, where they unfold).
+  double x0 = 0, x1 = L, y0 = -0.2 * L, y1 = 0.05 * L;
+  std::vector<Interval> all = c.before;
+  all.push_back(c.incoming);
+  for (const Interval& w : all) {
+    if (w.source.norm() > 6 * L) continue;
+    x0 = std::min(x0, w.source.x()), x1 = std::max(x1, w.source.x()), y0 = std::min(y0, -w.source.y());
+  }
+  Panel G(60, 600, 820, 250, x0, y0, x1, y1, true);
+  doc.line(G, Vec2(0, 0), Vec2(L, 0), "#000", 2);
+  for (const Interval& w : all) {
+    const Vec2 s(w.source.x(), -w.source.y());
+    if (w.source.norm() > 6 * L) continue;
+    doc.line(G, s, Vec2(w.b0, 0), colour(w), 1, true);
+    doc.line(G, s, Vec2(w.b1, 0), colour(w), 1, true);
+    doc.dot(G, s, 4, colour(w));
+    doc.label(G, s, "σ=" + shortNum(w.sigma), 10, colour(w));
+  }
+  doc.labelPx(10, 595, "edge [0, " + shortNum(L) + "] and pseudo-sources (unfolded below it; far ones omitted)", 12);
+  doc.labelPx(10, 20, "fuzz_edge_update: distance functions coloured by pseudo-source" +
+                          (error.empty() ? std::string() : "; insert threw: " + error), 14);
+  doc.write(out);
+}
+
+}  // namespace geodex::verify
