@@ -5,7 +5,8 @@
 // distance field σ + |P − S3| at points of its range, S3 the pseudo-source unfolded across v0v2 in
 // 3-D; every sampled ray of the window leaves the face inside a child; children lie within their
 // edges, at most one per edge; the Fig. 6 branch equals the exact tree off ε-ambiguity. No mesh,
-// no solver. See verify::checkPropagation.
+// no solver.
+// Format and check: verify/include/geodex/verify/cases/fuzz_propagation.h.
 #include "decode.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -17,13 +17,7 @@
 //   fuzz_mesh_io      cases/fuzz_mesh_io.h
 //   fuzz_predicates   cases/fuzz_predicates.h
 //   fuzz_edge_update  cases/fuzz_edge_update.h
-//   fuzz_propagation  one 3-D face (lattice positions nudged by the tolerances: needles,
-//                     zero-area faces, collinear sources are common) and one interval on its edge
-//                     v0v2 → the solver's one propagation step (propagateLocal, childInterval):
-//                     each child's distance function equals σ + the 3-D distance to the parent's
-//                     pseudo-source unfolded across v0v2; every sampled ray of the window leaves
-//                     the face inside a child; children within their edges, at most one per edge;
-//                     the branch equals the exactly evaluated Fig. 6 tree off ε-ambiguity.
+//   fuzz_propagation  cases/fuzz_propagation.h
 //   fuzz_two_faces    two faces sharing an edge (any 3-D lattice positions) and a source point →
 //                     a full solve with the full InvariantChecker and the unfolding check (every
 //                     propagated child's distance equals σ + the 3-D distance to its parent's
@@ -59,6 +53,7 @@
 #include "geodex/verify/cases/fuzz_edge_update.h"
 #include "geodex/verify/cases/fuzz_mesh_io.h"
 #include "geodex/verify/cases/fuzz_predicates.h"
+#include "geodex/verify/cases/fuzz_propagation.h"
 #include "geodex/verify/cases/fuzz_target.h"
 #include "geodex/verify/cases/source_spec.h"
 
@@ -77,26 +72,6 @@ inline constexpr int kMaxFuzzSources = 3;
 // lattice unit is 2^unitExp (unitExp wrapped into [−20, 20]), so every case also runs scaled.
 // Ranges are in lattice units; "nL" is the edge length's lattice value rounded up.
 
-/// fuzz_propagation: one face and one interval on its edge e0 = v0v2. The source is given in the
-/// interval's frame on e0 (x from v0, y >= 0 its height on the far side of e0 from v1).
-struct PropagationSpec {
-  std::int8_t unitExp = 0;
-  std::array<std::array<Quantity, 3>, 3> points;  ///< v0, v2, v1: coordinates ∈ [−16, 16];
-                                                  ///< nudges relative to 16 lattice units
-  Quantity b0, b1;  ///< along e0 in 16ths of its length L: ∈ [0, 16], swapped if reversed,
-                    ///< clamped to [0, L]; nudges relative to L
-  /// mod 3: 0 the source at (sourceX, sourceY); 1 (2) on the line from v1 through b0 (b1),
-  /// beyond it: at b + λ (b − v1) with λ = sourceX / 8, then moved by sourceY across that line
-  /// (G2–G5 in any face, not only in axis-aligned ones).
-  std::uint8_t sourceMode = 0;
-  Quantity sourceX;  ///< mode 0: x ∈ [−64, 80]; modes 1, 2: λ × 8 ∈ [0, 64] (|·| taken)
-  Quantity sourceY;  ///< mode 0: y ∈ [0, 64] (|y| taken); modes 1, 2: an offset ∈ [−16, 16]
-  Quantity sigma;    ///< σ ∈ [0, 64] (|σ| taken)
-  /// bit 0: the mesh edge e1 runs v1 → v0; bit 1: e2 runs v2 → v1 (a child edge may run either
-  /// way in a mesh, and the child interval is then mirrored along it).
-  std::uint8_t childDirections = 0;
-  // Nudges of b0, b1 are relative to L; of the source and σ to 16 lattice units.
-};
 
 /// fuzz_two_faces: faces B = (v0, v1, v2) and A = (v0, v2, w) sharing the edge v0v2; windows
 /// from the source cross into the other face.
@@ -132,23 +107,11 @@ struct SolverSpec {
   Quantity stop;  ///< ∈ [0, 64] lattice units
 };
 
-std::vector<std::uint8_t> encode(const PropagationSpec& s);
 std::vector<std::uint8_t> encode(const TwoFaceSpec& s);
 std::vector<std::uint8_t> encode(const SolverSpec& s);
 
 // === Cases: decoded inputs =====================================================================
 
-struct PropagationCase {
-  std::array<Vec3, 3> face;  ///< v0, v2, v1: the window's edge e0 = v0v2 and the apex
-  /// On e0 (x from v0): b0 < b1 within [0, |v0v2|], the pseudo-source with y >= 0 on the far
-  /// side of e0 from v1, σ >= 0.
-  Interval window;
-  bool e1Forward = true;  ///< the mesh edge e1 runs v0 → v1 (else v1 → v0)
-  bool e2Forward = true;  ///< the mesh edge e2 runs v1 → v2 (else v2 → v1)
-};
-/// The LocalWindow GeodesicSolver::propagate builds for the case: e0's frame from the 3-D
-/// positions as Mesh builds a face frame, the source reflected below e0.
-LocalWindow localWindowOf(const PropagationCase& c);
 
 struct TwoFaceCase {
   TriangleSoup soup;  ///< vertices v0, v2, v1, w; face 0 = B, face 1 = A
@@ -167,13 +130,10 @@ using FuzzCase =
 
 /// Each target's decoder, description and picture, which decode, describe and writeSvg below
 /// dispatch to.
-std::optional<PropagationCase> decodePropagation(std::span<const std::uint8_t> bytes);
 std::optional<TwoFaceCase> decodeTwoFaces(std::span<const std::uint8_t> bytes);
 std::optional<SolverCase> decodeSolver(std::span<const std::uint8_t> bytes);
-void describe(const PropagationCase& c, std::ostream& out);
 void describe(const TwoFaceCase& c, std::ostream& out);
 void describe(const SolverCase& c, std::ostream& out);
-void writeSvg(const PropagationCase& c, std::ostream& out);
 void writeSvg(const TwoFaceCase& c, std::ostream& out);
 void writeSvg(const SolverCase& c, std::ostream& out);
 
@@ -190,7 +150,6 @@ std::optional<FuzzCase> decode(FuzzTarget t, std::span<const std::uint8_t> bytes
 Verdict check(const FuzzCase& c);
 
 /// The per-target checks `check` dispatches to.
-Verdict checkPropagation(const PropagationCase& c);
 Verdict checkTwoFaces(const TwoFaceCase& c);
 Verdict checkSolver(const SolverCase& c);
 
