@@ -4,7 +4,8 @@
 // unfolded into the crossed face, computed independently from the 3-D positions; the full
 // invariant tier holds at every edge update; distances at the vertices, at edge points and at
 // face points equal the exact two-face distance (straight within a face, else the minimum over
-// the shared edge). See verify::checkTwoFaces.
+// the shared edge).
+// Format and check: verify/include/geodex/verify/cases/fuzz_two_faces.h.
 #include "decode.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

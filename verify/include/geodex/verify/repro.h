@@ -18,11 +18,7 @@
 //   fuzz_predicates   cases/fuzz_predicates.h
 //   fuzz_edge_update  cases/fuzz_edge_update.h
 //   fuzz_propagation  cases/fuzz_propagation.h
-//   fuzz_two_faces    two faces sharing an edge (any 3-D lattice positions) and a source point →
-//                     a full solve with the full InvariantChecker and the unfolding check (every
-//                     propagated child's distance equals σ + the 3-D distance to its parent's
-//                     pseudo-source unfolded into the crossed face); distances at vertices, edge
-//                     and face points equal the exact two-face distance (min over the shared edge).
+//   fuzz_two_faces    cases/fuzz_two_faces.h
 //   fuzz_solver       a small mesh (height field on a grid with holes, jitter and steps, or a
 //                     lattice soup; ≤ 64 faces) and 1–3 sources → a full solve with the cheap
 //                     InvariantChecker (full in replay) and the unfolding check; Euclidean lower
@@ -55,6 +51,7 @@
 #include "geodex/verify/cases/fuzz_predicates.h"
 #include "geodex/verify/cases/fuzz_propagation.h"
 #include "geodex/verify/cases/fuzz_target.h"
+#include "geodex/verify/cases/fuzz_two_faces.h"
 #include "geodex/verify/cases/source_spec.h"
 
 namespace geodex::verify {
@@ -72,15 +69,6 @@ inline constexpr int kMaxFuzzSources = 3;
 // lattice unit is 2^unitExp (unitExp wrapped into [−20, 20]), so every case also runs scaled.
 // Ranges are in lattice units; "nL" is the edge length's lattice value rounded up.
 
-
-/// fuzz_two_faces: faces B = (v0, v1, v2) and A = (v0, v2, w) sharing the edge v0v2; windows
-/// from the source cross into the other face.
-struct TwoFaceSpec {
-  std::int8_t unitExp = 0;
-  std::array<std::array<Quantity, 3>, 4> points;  ///< v0, v2, v1, w: coordinates ∈ [−16, 16]
-  std::uint8_t winding = 0;  ///< bit 0 flips B, bit 1 flips A
-  SourceSpec source;
-};
 
 /// fuzz_solver: a small mesh and its sources.
 struct SolverSpec {
@@ -107,16 +95,11 @@ struct SolverSpec {
   Quantity stop;  ///< ∈ [0, 64] lattice units
 };
 
-std::vector<std::uint8_t> encode(const TwoFaceSpec& s);
 std::vector<std::uint8_t> encode(const SolverSpec& s);
 
 // === Cases: decoded inputs =====================================================================
 
 
-struct TwoFaceCase {
-  TriangleSoup soup;  ///< vertices v0, v2, v1, w; face 0 = B, face 1 = A
-  SurfacePoint source;
-};
 struct SolverCase {
   TriangleSoup soup;
   std::vector<SurfacePoint> sources;
@@ -130,11 +113,8 @@ using FuzzCase =
 
 /// Each target's decoder, description and picture, which decode, describe and writeSvg below
 /// dispatch to.
-std::optional<TwoFaceCase> decodeTwoFaces(std::span<const std::uint8_t> bytes);
 std::optional<SolverCase> decodeSolver(std::span<const std::uint8_t> bytes);
-void describe(const TwoFaceCase& c, std::ostream& out);
 void describe(const SolverCase& c, std::ostream& out);
-void writeSvg(const TwoFaceCase& c, std::ostream& out);
 void writeSvg(const SolverCase& c, std::ostream& out);
 
 /// The case the bytes describe, or nullopt when the target skips them (too long, or a shape the
@@ -150,7 +130,6 @@ std::optional<FuzzCase> decode(FuzzTarget t, std::span<const std::uint8_t> bytes
 Verdict check(const FuzzCase& c);
 
 /// The per-target checks `check` dispatches to.
-Verdict checkTwoFaces(const TwoFaceCase& c);
 Verdict checkSolver(const SolverCase& c);
 
 /// decode + check. Skipped bytes give an uninteresting passing verdict.
