@@ -19,13 +19,7 @@
 //   fuzz_edge_update  cases/fuzz_edge_update.h
 //   fuzz_propagation  cases/fuzz_propagation.h
 //   fuzz_two_faces    cases/fuzz_two_faces.h
-//   fuzz_solver       a small mesh (height field on a grid with holes, jitter and steps, or a
-//                     lattice soup; ≤ 64 faces) and 1–3 sources → a full solve with the cheap
-//                     InvariantChecker (full in replay) and the unfolding check; Euclidean lower
-//                     bound, edge-graph Dijkstra upper bound, Lipschitz along edges, edge-midpoint
-//                     queries within their bounds, path length = distance; planar meshes agree
-//                     with the Euclidean (convex) or planar-domain distance to 1e-9 × diagonal;
-//                     optionally a stop distance and d(a, b) = d(b, a).
+//   fuzz_solver       cases/fuzz_solver.h
 //
 // Link: this file's implementation uses GMP (exact predicates): link `gmpxx gmp` with
 // geodex_verify when calling anything declared here.
@@ -49,6 +43,7 @@
 #include "geodex/verify/cases/fuzz_edge_update.h"
 #include "geodex/verify/cases/fuzz_mesh_io.h"
 #include "geodex/verify/cases/fuzz_predicates.h"
+#include "geodex/verify/cases/fuzz_solver.h"
 #include "geodex/verify/cases/fuzz_propagation.h"
 #include "geodex/verify/cases/fuzz_target.h"
 #include "geodex/verify/cases/fuzz_two_faces.h"
@@ -56,66 +51,22 @@
 
 namespace geodex::verify {
 
-// === Work caps =================================================================================
-// The fuzzing budget: the library has no fuzzing switch; the decoders cap what a case may ask for.
-
-inline constexpr int kMaxFuzzFaces = 64;          ///< fuzz_solver meshes
-inline constexpr int kMaxFuzzGridCells = 32;      ///< fuzz_solver grids: 2 faces per cell
-inline constexpr int kMaxFuzzSoupPoints = 24;     ///< fuzz_solver lattice soups
-inline constexpr int kMaxFuzzSources = 3;
-
 // === Specs: a case as its bytes describe it ====================================================
 // Each target's input is one spec, written field by field in the order below. The world's
 // lattice unit is 2^unitExp (unitExp wrapped into [−20, 20]), so every case also runs scaled.
 // Ranges are in lattice units; "nL" is the edge length's lattice value rounded up.
 
 
-/// fuzz_solver: a small mesh and its sources.
-struct SolverSpec {
-  std::int8_t unitExp = 0;
-  std::uint8_t mode = 0;  ///< mod 2: 0 height field on a grid, 1 lattice soup
-  // --- mode 0: a grid of nx × ny cells (1 + byte mod 8 each, ny cut so nx·ny ≤ 32)
-  std::uint8_t nx = 1, ny = 1;
-  std::uint8_t levels = 0;  ///< z ∈ [0, max(1, levels mod 5)): 0 and 1 are flat
-  std::uint8_t zStep = 0;   ///< mod 4: z unit = 1, 1/2, 2, 1/4 × the lattice unit
-  /// One byte per vertex ((nx+1)(ny+1), row by row): bits 0–3 level (mod levels); bits 4–5 and
-  /// 6–7 move the vertex by {0, +1/2, −1/2, 0} cell in x and y (collinear, zero-area and
-  /// needle faces).
-  std::vector<std::uint8_t> vertexBytes;
-  /// One byte per cell: bit 0 the other diagonal, bit 1 the cell is removed (holes,
-  /// disconnected parts, unreferenced vertices).
-  std::vector<std::uint8_t> cellBytes;
-  // --- mode 1: a soup of lattice points (count 3 + byte mod 22) and faces (1 + byte mod 64)
-  std::vector<std::array<std::int8_t, 3>> points;  ///< coordinates wrapped into [−8, 8]
-  std::vector<std::array<std::uint8_t, 3>> faces;  ///< indices mod #points
-  // --- both
-  std::vector<SourceSpec> sources;  ///< count 1 + byte mod 3
-  /// bit 0: solve again with stopDistance = stop and compare; bit 1: check d(a, b) = d(b, a).
-  std::uint8_t flags = 0;
-  Quantity stop;  ///< ∈ [0, 64] lattice units
-};
 
-std::vector<std::uint8_t> encode(const SolverSpec& s);
 
 // === Cases: decoded inputs =====================================================================
 
 
-struct SolverCase {
-  TriangleSoup soup;
-  std::vector<SurfacePoint> sources;
-  std::optional<double> stopDistance;
-  bool checkSymmetry = false;
-  bool planar = false;     ///< a flat grid without moved vertices: the planar oracles apply
-  bool rectangle = false;  ///< … and without removed cells: convex, distances are Euclidean
-};
 using FuzzCase =
     std::variant<MeshIoCase, PredicateCase, EdgeUpdateCase, PropagationCase, TwoFaceCase, SolverCase>;
 
 /// Each target's decoder, description and picture, which decode, describe and writeSvg below
 /// dispatch to.
-std::optional<SolverCase> decodeSolver(std::span<const std::uint8_t> bytes);
-void describe(const SolverCase& c, std::ostream& out);
-void writeSvg(const SolverCase& c, std::ostream& out);
 
 /// The case the bytes describe, or nullopt when the target skips them (too long, or a shape the
 /// target does not test: a degenerate range, a mesh the validator refuses, an invalid old list).
@@ -130,7 +81,6 @@ std::optional<FuzzCase> decode(FuzzTarget t, std::span<const std::uint8_t> bytes
 Verdict check(const FuzzCase& c);
 
 /// The per-target checks `check` dispatches to.
-Verdict checkSolver(const SolverCase& c);
 
 /// decode + check. Skipped bytes give an uninteresting passing verdict.
 Verdict replay(FuzzTarget t, std::span<const std::uint8_t> bytes);

@@ -1,0 +1,398 @@
+// fuzz_solver: a whole solve on a small mesh, against the distance oracles (fuzz_solver.h).
+#include "geodex/verify/cases/fuzz_solver.h"
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "check_support.h"
+#include "geodex/error.h"
+#include "geodex/geodesic_solver.h"
+#include "geodex/mesh.h"
+#include "geodex/tolerance.h"
+#include "geodex/verify/invariant_checker.h"
+#include "geodex/verify/oracles.h"
+#include "mesh_case.h"
+#include "svg.h"
+
+namespace geodex::verify {
+
+using namespace detail;
+
+// ===  Format ====================================================================================
+
+namespace {
+
+/// The grid size a spec's nx, ny bytes stand for.
+std::pair<int, int> gridSize(std::uint8_t nxByte, std::uint8_t nyByte) {
+  const int nx = 1 + nxByte % 8;
+  const int ny = std::min(1 + nyByte % 8, kMaxFuzzGridCells / nx);
+  return {nx, ny};
+}
+
+SolverSpec readSolverSpec(ByteReader& r) {
+  SolverSpec s;
+  s.unitExp = r.i8();
+  s.mode = r.u8();
+  if (s.mode % 2 == 0) {
+    s.nx = r.u8();
+    s.ny = r.u8();
+    s.levels = r.u8();
+    s.zStep = r.u8();
+    const auto [nx, ny] = gridSize(s.nx, s.ny);
+    for (int i = 0; i < (nx + 1) * (ny + 1); ++i) s.vertexBytes.push_back(r.u8());
+    for (int i = 0; i < nx * ny; ++i) s.cellBytes.push_back(r.u8());
+  } else {
+    const int np = 3 + r.u8() % (kMaxFuzzSoupPoints - 2);
+    for (int i = 0; i < np; ++i) s.points.push_back({r.i8(), r.i8(), r.i8()});
+    const int nf = 1 + r.u8() % kMaxFuzzFaces;
+    for (int i = 0; i < nf; ++i) s.faces.push_back({r.u8(), r.u8(), r.u8()});
+  }
+  const int ns = 1 + r.u8() % kMaxFuzzSources;
+  for (int i = 0; i < ns; ++i) s.sources.push_back(readSourceSpec(r));
+  s.flags = r.u8();
+  s.stop = r.quantity();
+  return s;
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> encode(const SolverSpec& s) {
+  ByteWriter w;
+  w.i8(s.unitExp);
+  w.u8(s.mode);
+  if (s.mode % 2 == 0) {
+    w.u8(s.nx);
+    w.u8(s.ny);
+    w.u8(s.levels);
+    w.u8(s.zStep);
+    const auto [nx, ny] = gridSize(s.nx, s.ny);
+    for (int i = 0; i < (nx + 1) * (ny + 1); ++i)
+      w.u8(i < static_cast<int>(s.vertexBytes.size()) ? s.vertexBytes[i] : 0);
+    for (int i = 0; i < nx * ny; ++i)
+      w.u8(i < static_cast<int>(s.cellBytes.size()) ? s.cellBytes[i] : 0);
+  } else {
+    GEODEX_REQUIRE(s.points.size() >= 3 && s.points.size() <= kMaxFuzzSoupPoints,
+                   "3 to " << kMaxFuzzSoupPoints << " soup points");
+    GEODEX_REQUIRE(!s.faces.empty() && s.faces.size() <= kMaxFuzzFaces,
+                   "1 to " << kMaxFuzzFaces << " soup faces");
+    w.u8(static_cast<std::uint8_t>(s.points.size() - 3));
+    for (const auto& p : s.points)
+      for (std::int8_t c : p) w.i8(c);
+    w.u8(static_cast<std::uint8_t>(s.faces.size() - 1));
+    for (const auto& f : s.faces)
+      for (std::uint8_t c : f) w.u8(c);
+  }
+  GEODEX_REQUIRE(!s.sources.empty() && s.sources.size() <= kMaxFuzzSources,
+                 "1 to " << kMaxFuzzSources << " sources");
+  w.u8(static_cast<std::uint8_t>(s.sources.size() - 1));
+  for (const SourceSpec& src : s.sources) writeSourceSpec(w, src);
+  w.u8(s.flags);
+  w.quantity(s.stop);
+  return w.bytes();
+}
+
+// ===  Decoding ==================================================================================
+
+namespace {
+
+std::optional<SolverCase> makeSolverCase(const SolverSpec& s) {
+  const double unit = unitOf(s.unitExp);
+  SolverCase c;
+  TriangleSoup& soup = c.soup;
+  if (s.mode % 2 == 0) {
+    const auto [nx, ny] = gridSize(s.nx, s.ny);
+    const int levels = std::max(1, s.levels % 5);
+    static constexpr double kZSteps[] = {1.0, 0.5, 2.0, 0.25};
+    static constexpr double kJitter[] = {0.0, 0.5, -0.5, 0.0};
+    const double zUnit = kZSteps[s.zStep % 4] * unit;
+    bool jittered = false, flat = true, removed = false;
+    double z0 = 0.0;
+    for (int j = 0; j <= ny; ++j) {
+      for (int i = 0; i <= nx; ++i) {
+        const std::size_t k = static_cast<std::size_t>(j * (nx + 1) + i);
+        const std::uint8_t b = k < s.vertexBytes.size() ? s.vertexBytes[k] : 0;
+        const double dx = kJitter[(b >> 4) & 3], dy = kJitter[(b >> 6) & 3];
+        const double z = ((b & 15) % levels) * zUnit;
+        if (k == 0) z0 = z;
+        flat = flat && z == z0;
+        jittered = jittered || dx != 0.0 || dy != 0.0;
+        soup.positions.emplace_back((i + dx) * unit, (j + dy) * unit, z);
+      }
+    }
+    for (int j = 0; j < ny; ++j) {
+      for (int i = 0; i < nx; ++i) {
+        const std::size_t k = static_cast<std::size_t>(j * nx + i);
+        const std::uint8_t b = k < s.cellBytes.size() ? s.cellBytes[k] : 0;
+        if ((b & 2) != 0) {
+          removed = true;
+          continue;
+        }
+        const Index v00 = j * (nx + 1) + i, v10 = v00 + 1, v01 = v00 + (nx + 1), v11 = v01 + 1;
+        if ((b & 1) == 0) {
+          soup.faces.push_back({v00, v10, v11});
+          soup.faces.push_back({v00, v11, v01});
+        } else {
+          soup.faces.push_back({v00, v10, v01});
+          soup.faces.push_back({v10, v11, v01});
+        }
+      }
+    }
+    c.planar = flat && !jittered;
+    c.rectangle = c.planar && !removed;
+  } else {
+    for (const auto& p : s.points) {
+      soup.positions.emplace_back(wrapInt(p[0], -8, 8) * unit, wrapInt(p[1], -8, 8) * unit,
+                                  wrapInt(p[2], -8, 8) * unit);
+    }
+    const auto np = static_cast<Index>(soup.positions.size());
+    for (const auto& f : s.faces) soup.faces.push_back({f[0] % np, f[1] % np, f[2] % np});
+  }
+  if (soup.faces.empty() || soup.faces.size() > static_cast<std::size_t>(kMaxFuzzFaces)) return std::nullopt;
+  if (!soupValid(soup)) return std::nullopt;
+  for (const SourceSpec& src : s.sources) c.sources.push_back(makeSource(src, soup));
+  if ((s.flags & 1) != 0) c.stopDistance = std::abs(fieldValue(s.stop, 0, 64, unit, unit));
+  c.checkSymmetry = (s.flags & 2) != 0;
+  return c;
+}
+
+}  // namespace
+
+std::optional<SolverCase> decodeSolver(std::span<const std::uint8_t> bytes) {
+  if (bytes.size() > kMaxFuzzInputBytes) return std::nullopt;
+  ByteReader r(bytes);
+  return makeSolverCase(readSolverSpec(r));
+}
+
+// ===  Check =====================================================================================
+
+namespace {
+
+/// Forwards to the checker for planar oracles: the distances in a planar domain, or nullopt when
+/// the mesh is not one the oracle can describe (pinched boundary, several components).
+std::optional<std::vector<double>> planarReference(const Mesh& mesh, const TriangleSoup& soup,
+                                                   const std::vector<Vec3>& sources) {
+  if (mesh.numComponents() != 1) return std::nullopt;
+  try {
+    PlanarDomain domain(planarBoundaryPolygons(soup));
+    std::vector<Vec2> queries;
+    std::vector<Index> which;
+    for (Index x = 0; x < mesh.numVertices(); ++x) {
+      if (!mesh.isReferenced(x)) continue;
+      queries.emplace_back(soup.positions[x].x(), soup.positions[x].y());
+      which.push_back(x);
+    }
+    std::vector<double> ref(mesh.numVertices(), INFINITY);
+    for (const Vec3& s : sources) {
+      const auto d = domain.distances(Vec2(s.x(), s.y()), queries);
+      for (std::size_t i = 0; i < which.size(); ++i) ref[which[i]] = std::min(ref[which[i]], d[i]);
+    }
+    return ref;
+  } catch (const std::invalid_argument&) {
+    return std::nullopt;
+  }
+}
+
+}  // namespace
+
+Verdict checkSolver(const SolverCase& c) {
+  Verdict v;
+  v.interesting = true;
+  auto meshOpt = buildMesh(c.soup, v);
+  if (!meshOpt) return v;
+  const Mesh& mesh = *meshOpt;
+  // Every oracle below works in mesh units, as the solver does, so that its own arithmetic holds
+  // at any scale; the messages show the mesh as given.
+  const TriangleSoup soup = soupInMeshUnits(mesh);
+  const double inverse = mesh.meshUnit().inverse;
+  auto where = [&] {
+    std::string w = "\nmesh:\n" + describeSoup(mesh.soup());
+    for (const SurfacePoint& s : c.sources) w += "source " + formatSurfacePoint(s) + "\n";
+    return w;
+  };
+
+  GeodesicSolver solver(mesh);
+  InvariantChecker invariants(CheckLevel::Full, true);
+  UnfoldingChecker unfolding(mesh, &invariants);
+  solver.setObserver(&unfolding);
+  if (!solveChecked(solver, c.sources, {}, v)) return v.message += where(), v;
+  v.degeneracies = solver.counters();
+  const auto meshUnitDistances = solver.vertexDistancesInMeshUnits();
+  const std::vector<double> d(meshUnitDistances.begin(), meshUnitDistances.end());
+  {
+    std::ostringstream os;
+    os << mesh.numFaces() << " faces, " << c.sources.size() << " source(s), "
+       << solver.counters().cases << " propagation cases, " << solver.stats().intervalsAtEnd
+       << " intervals at the end";
+    v.summary = os.str();
+  }
+  const double diag = mesh.boundingBoxDiagonalInMeshUnits();
+  constexpr double kRel = 1e-9;  // DESIGN.md's accuracy target, × the distances or diagonal
+
+  for (Index x = 0; x < d.size(); ++x) {
+    if (std::isnan(d[x]) || d[x] < 0.0)
+      return fail(v, "distance-values", "vertex " + std::to_string(x) + " has distance " + fmt(d[x]) + where());
+  }
+  std::vector<Vec3> sourcePositions;
+  for (const SurfacePoint& s : c.sources) sourcePositions.push_back(surfacePointPosition(soup, s));
+  const std::vector<double> euclid = euclideanDistances(soup.positions, sourcePositions);
+  auto report = [&](const char* check, const CheckReport& r) {
+    if (!r.ok()) fail(v, check, r.summary() + where());
+    return r.ok();
+  };
+  // The oracles place the sources in 3D, to the rounding of the coordinates: where every
+  // distance is far below them (sources 1e-10 from a vertex of a mesh 50 across), that is more
+  // than kRel × the distances (regress/{euclidean-lower,upper}-bound-source-placed-*).
+  double largestCoordinate = 0.0;
+  for (const Vec3& x : soup.positions) largestCoordinate = std::max(largestCoordinate, x.cwiseAbs().maxCoeff());
+  double placing = 2.0 * tol::kPositionRoundingRel * largestCoordinate;
+  // The solver takes a source within tol::kSnapParam of its face's barycentric range of a vertex
+  // or an edge as on it (surface_point.cpp, resolve): that moves it by at most kSnapParam × its
+  // face's longest edge, the contract kSnapParam documents. A face source with a barycentric
+  // 1.5e-11 was solved on the edge, 2.5e-10 away, and a vertex 4.1e-9 from it came out 6.8e-11
+  // below the straight line (corpus/fuzz_solver/regress/euclidean-lower-bound-face-source-snapped-
+  // to-its-edge).
+  for (const SurfacePoint& src : c.sources) {
+    double longest = 0.0;
+    if (src.kind == SurfacePoint::Kind::Edge) {
+      longest = (soup.positions[src.vertex] - soup.positions[src.toVertex]).norm();
+    } else if (src.kind == SurfacePoint::Kind::Face) {
+      const auto& f = soup.faces[src.face];
+      for (int k = 0; k < 3; ++k)
+        longest = std::max(longest, (soup.positions[f[k]] - soup.positions[f[(k + 1) % 3]]).norm());
+    }
+    placing = std::max(placing, 2.0 * tol::kPositionRoundingRel * largestCoordinate + tol::kSnapParam * longest);
+  }
+  if (!report("euclidean-lower-bound", checkEuclideanLowerBound(d, euclid, kRel, placing))) return v;
+  if (!report("upper-bound", checkUpperBound(d, edgeGraphDijkstra(soup, c.sources), kRel, placing))) return v;
+  if (!report("lipschitz", checkLipschitz(soup, d, kRel))) return v;
+  if (c.rectangle) {
+    if (!report("planar-agreement", checkAgreement(d, euclid, kRel, placing))) return v;
+  } else if (c.planar) {
+    if (const auto ref = planarReference(mesh, soup, sourcePositions))
+      if (!report("planar-agreement", checkAgreement(d, *ref, kRel, placing))) return v;
+  }
+
+  // Queries at edge midpoints lie within what their edge's ends allow.
+  for (Index e = 0; e < mesh.numEdges(); ++e) {
+    const Edge& E = mesh.edge(e);
+    const double du = d[E.vertex[0]], dv = d[E.vertex[1]];
+    const double got = solver.distanceInMeshUnits(SurfacePoint::onEdge(E.vertex[0], E.vertex[1], 0.5));
+    const Vec3 mid = 0.5 * (soup.positions[E.vertex[0]] + soup.positions[E.vertex[1]]);
+    if (!std::isfinite(du)) {
+      if (std::isfinite(got))
+        return fail(v, "edge-query", "edge " + std::to_string(e) + " has unreachable ends but its midpoint is at " + fmt(got) + where());
+      continue;
+    }
+    double lower = std::max(du, dv) - 0.5 * E.length;
+    double nearest = INFINITY;
+    for (const Vec3& s : sourcePositions) nearest = std::min(nearest, (s - mid).norm());
+    lower = std::max(lower, nearest);
+    const double upper = std::min(du, dv) + 0.5 * E.length;
+    const double slack = kRel * (upper + diag);
+    if (!(got >= lower - slack && got <= upper + slack)) {
+      std::ostringstream os;
+      os << std::setprecision(17) << "the midpoint of edge " << e << " (" << E.vertex[0] << "-"
+         << E.vertex[1] << ", ends at " << du << " and " << dv << ", length " << E.length
+         << ") is at " << got << ", outside [" << lower << ", " << upper << "]";
+      return fail(v, "edge-query", os.str() + where());
+    }
+  }
+
+  // A traced path ends at a source and is as long as the distance.
+  Index farthest = kNoIndex;
+  for (Index x = 0; x < d.size(); ++x)
+    if (std::isfinite(d[x]) && (farthest == kNoIndex || d[x] > d[farthest])) farthest = x;
+  if (farthest != kNoIndex && d[farthest] > 0.0) {
+    try {
+      GeodesicPath p = solver.path(SurfacePoint::atVertex(farthest));
+      p.length *= inverse;
+      for (PathPoint& q : p.points) q.position *= inverse;
+      double sum = 0.0;
+      for (std::size_t i = 0; i + 1 < p.points.size(); ++i) sum += (p.points[i + 1].position - p.points[i].position).norm();
+      double toSource = INFINITY;
+      if (!p.points.empty())
+        for (const Vec3& s : sourcePositions) toSource = std::min(toSource, (p.points.back().position - s).norm());
+      const double tolerance = kRel * (d[farthest] + diag);
+      if (p.points.empty() || !(std::abs(p.length - d[farthest]) <= tolerance) ||
+          !(std::abs(sum - p.length) <= tolerance) || !(toSource <= tolerance)) {
+        std::ostringstream os;
+        os << std::setprecision(17) << "the path from vertex " << farthest << " (distance " << d[farthest]
+           << ") has length " << p.length << ", " << p.points.size() << " points summing to " << sum
+           << ", ending " << toSource << " from the nearest source:";
+        for (const PathPoint& q : p.points)
+          os << "\n  " << formatSurfacePoint(q.where) << " at (" << q.position.x() << ", " << q.position.y()
+             << ", " << q.position.z() << ")";
+        return fail(v, "path-length", os.str() + where());
+      }
+    } catch (const InputError& e) {
+      // Its length is in file units: refused, rightly, when the distance it must equal overflows.
+      const double longest = d[farthest] + kRel * (d[farthest] + diag);
+      if (!(e.kind() == "distance-overflow" && inFileUnitsRange(longest, mesh.meshUnit()) == ScaledRange::Overflow))
+        return fail(v, "unexpected-exception", std::string("path: ") + e.what() + where());
+    } catch (const std::exception& e) {
+      return fail(v, "unexpected-exception", std::string("path: ") + e.what() + where());
+    }
+  }
+
+  // A stop distance keeps every distance within it and drops every one beyond.
+  if (c.stopDistance) {
+    GeodesicSolver stopped(mesh);
+    SolveOptions options;
+    options.stopDistance = *c.stopDistance;
+    if (!solveChecked(stopped, c.sources, options, v)) return v.message += where(), v;
+    const auto ds = stopped.vertexDistancesInMeshUnits();
+    const double stop = *c.stopDistance * inverse;
+    // Distances are good to kRel × diagonal: a vertex that close to the stop may go either way.
+    const double band = kRel * (stop + diag);
+    for (Index x = 0; x < d.size(); ++x) {
+      const bool within = d[x] <= stop - band;
+      const bool beyond = d[x] > stop + band;
+      if ((within && !(std::abs(ds[x] - d[x]) <= band)) || (beyond && ds[x] != INFINITY)) {
+        return fail(v, "stop-distance", "vertex " + std::to_string(x) + " at " + fmt(d[x]) + " gets " +
+                                            fmt(ds[x]) + " with stop distance " + fmt(stop) + where());
+      }
+    }
+  }
+
+  // d(a, b) = d(b, a) for a single vertex source a and the farthest vertex b.
+  if (c.checkSymmetry && c.sources.size() == 1 && c.sources[0].kind == SurfacePoint::Kind::Vertex &&
+      farthest != kNoIndex && farthest != c.sources[0].vertex) {
+    GeodesicSolver back(mesh);
+    const std::vector<SurfacePoint> from{SurfacePoint::atVertex(farthest)};
+    if (!solveChecked(back, from, {}, v)) return v.message += where(), v;
+    if (!report("symmetry", checkSymmetry(d[farthest], back.vertexDistancesInMeshUnits()[c.sources[0].vertex], kRel))) return v;
+  }
+  return v;
+}
+
+// ===  Description and picture ===================================================================
+
+void describe(const SolverCase& c, std::ostream& out) {
+  out << std::setprecision(17);
+  out << "# fuzz_solver: " << c.soup.faces.size() << " faces"
+      << (c.rectangle ? ", planar rectangle" : c.planar ? ", planar" : "") << "\n"
+      << describeSoup(c.soup);
+  for (const SurfacePoint& s : c.sources) out << "source " << formatSurfacePoint(s) << "\n";
+  if (c.stopDistance) out << "stop-distance " << *c.stopDistance << "\n";
+  if (c.checkSymmetry) out << "check-symmetry\n";
+}
+
+void writeSvg(const SolverCase& c, std::ostream& out) {
+  std::vector<Vec3> sources;
+  for (const SurfacePoint& s : c.sources) sources.push_back(surfacePointPosition(c.soup, s));
+  std::vector<double> d;
+  try {
+    const Mesh mesh(c.soup);
+    d = exactGeodesicDistance(mesh, c.sources);
+  } catch (const std::exception&) {
+  }
+  svgMesh(c.soup, sources, d, "fuzz_solver: vertex: distance", out);
+}
+
+}  // namespace geodex::verify
