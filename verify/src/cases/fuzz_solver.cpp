@@ -173,8 +173,9 @@ std::optional<SolverCase> decodeSolver(std::span<const std::uint8_t> bytes) {
 
 namespace {
 
-/// Forwards to the checker for planar oracles: the distances in a planar domain, or nullopt when
-/// the mesh is not one the oracle can describe (pinched boundary, several components).
+/// The distances within the planar domain the mesh covers (PlanarDomain, oracles.h) from the
+/// nearest source to each vertex, or nullopt when the mesh is not one the oracle can describe
+/// (pinched boundary, several components).
 std::optional<std::vector<double>> planarReference(const Mesh& mesh, const TriangleSoup& soup,
                                                    const std::vector<Vec3>& sources) {
   if (mesh.numComponents() != 1) return std::nullopt;
@@ -198,176 +199,237 @@ std::optional<std::vector<double>> planarReference(const Mesh& mesh, const Trian
   }
 }
 
-}  // namespace
+constexpr double kRel = 1e-9;  // DESIGN.md's accuracy target, × the distances or diagonal
 
-Verdict checkSolver(const SolverCase& c) {
-  Verdict v;
-  v.interesting = true;
-  auto meshOpt = buildMesh(c.soup, v);
-  if (!meshOpt) return v;
-  const Mesh& mesh = *meshOpt;
-  // Every oracle below works in mesh units, as the solver does, so that its own arithmetic holds
-  // at any scale; the messages show the mesh as given.
-  const TriangleSoup soup = soupInMeshUnits(mesh);
-  const double inverse = mesh.meshUnit().inverse;
-  auto where = [&] {
+/// A case after its first solve, as each step of checkSolver reads it. Every oracle works in
+/// mesh units, as the solver does, so that its own arithmetic holds at any scale; the messages
+/// show the mesh as given.
+struct SolvedCase {
+  const SolverCase& c;
+  const Mesh& mesh;
+  const GeodesicSolver& solver;
+  TriangleSoup soup;                 ///< the mesh in mesh units
+  std::vector<double> d;             ///< the vertex distances, in mesh units
+  std::vector<Vec3> sourcePositions;  ///< in mesh units
+  double diag = 0.0;                 ///< the bounding box diagonal, in mesh units
+
+  /// The mesh as given and its sources, to follow a failure's message.
+  std::string where() const {
     std::string w = "\nmesh:\n" + describeSoup(mesh.soup());
     for (const SurfacePoint& s : c.sources) w += "source " + formatSurfacePoint(s) + "\n";
     return w;
-  };
-
-  GeodesicSolver solver(mesh);
-  InvariantChecker invariants(CheckLevel::Full, true);
-  UnfoldingChecker unfolding(mesh, &invariants);
-  solver.setObserver(&unfolding);
-  if (!solveChecked(solver, c.sources, {}, v)) return v.message += where(), v;
-  v.degeneracies = solver.counters();
-  const auto meshUnitDistances = solver.vertexDistancesInMeshUnits();
-  const std::vector<double> d(meshUnitDistances.begin(), meshUnitDistances.end());
-  {
-    std::ostringstream os;
-    os << mesh.numFaces() << " faces, " << c.sources.size() << " source(s), "
-       << solver.counters().cases << " propagation cases, " << solver.stats().intervalsAtEnd
-       << " intervals at the end";
-    v.summary = os.str();
   }
-  const double diag = mesh.boundingBoxDiagonalInMeshUnits();
-  constexpr double kRel = 1e-9;  // DESIGN.md's accuracy target, × the distances or diagonal
+};
 
-  for (Index x = 0; x < d.size(); ++x) {
-    if (std::isnan(d[x]) || d[x] < 0.0)
-      return fail(v, "distance-values", "vertex " + std::to_string(x) + " has distance " + fmt(d[x]) + where());
+/// An oracle's report as the verdict: false, with the check failed in v, when it is not ok.
+bool report(Verdict& v, const char* check, const CheckReport& r, const SolvedCase& s) {
+  if (!r.ok()) fail(v, check, r.summary() + s.where());
+  return r.ok();
+}
+
+/// No distance is NaN or negative.
+bool checkDistanceValues(const SolvedCase& s, Verdict& v) {
+  for (Index x = 0; x < s.d.size(); ++x) {
+    if (std::isnan(s.d[x]) || s.d[x] < 0.0)
+      return fail(v, "distance-values", "vertex " + std::to_string(x) + " has distance " + fmt(s.d[x]) + s.where()), false;
   }
-  std::vector<Vec3> sourcePositions;
-  for (const SurfacePoint& s : c.sources) sourcePositions.push_back(surfacePointPosition(soup, s));
-  const std::vector<double> euclid = euclideanDistances(soup.positions, sourcePositions);
-  auto report = [&](const char* check, const CheckReport& r) {
-    if (!r.ok()) fail(v, check, r.summary() + where());
-    return r.ok();
-  };
+  return true;
+}
+
+/// How far the oracles' sources may be from the solver's: the rounding of placing them in 3D,
+/// and the snap of a source near a vertex or an edge onto it.
+double sourcePlacement(const SolvedCase& s) {
   // The oracles place the sources in 3D, to the rounding of the coordinates: where every
-  // distance is far below them (sources 1e-10 from a vertex of a mesh 50 across), that is more
+  // distance is far below them (sources very close to a vertex of a large mesh), that is more
   // than kRel × the distances (regress/{euclidean-lower,upper}-bound-source-placed-*).
   double largestCoordinate = 0.0;
-  for (const Vec3& x : soup.positions) largestCoordinate = std::max(largestCoordinate, x.cwiseAbs().maxCoeff());
+  for (const Vec3& x : s.soup.positions) largestCoordinate = std::max(largestCoordinate, x.cwiseAbs().maxCoeff());
   double placing = 2.0 * tol::kPositionRoundingRel * largestCoordinate;
   // The solver takes a source within tol::kSnapParam of its face's barycentric range of a vertex
   // or an edge as on it (surface_point.cpp, resolve): that moves it by at most kSnapParam × its
-  // face's longest edge, the contract kSnapParam documents. A face source with a barycentric
-  // 1.5e-11 was solved on the edge, 2.5e-10 away, and a vertex 4.1e-9 from it came out 6.8e-11
-  // below the straight line (corpus/fuzz_solver/regress/euclidean-lower-bound-face-source-snapped-
-  // to-its-edge).
-  for (const SurfacePoint& src : c.sources) {
+  // face's longest edge, the contract kSnapParam documents, and a vertex near it can come out
+  // below the straight line from where the case put it
+  // (regress/euclidean-lower-bound-face-source-snapped-to-its-edge).
+  for (const SurfacePoint& src : s.c.sources) {
     double longest = 0.0;
     if (src.kind == SurfacePoint::Kind::Edge) {
-      longest = (soup.positions[src.vertex] - soup.positions[src.toVertex]).norm();
+      longest = (s.soup.positions[src.vertex] - s.soup.positions[src.toVertex]).norm();
     } else if (src.kind == SurfacePoint::Kind::Face) {
-      const auto& f = soup.faces[src.face];
+      const auto& f = s.soup.faces[src.face];
       for (int k = 0; k < 3; ++k)
-        longest = std::max(longest, (soup.positions[f[k]] - soup.positions[f[(k + 1) % 3]]).norm());
+        longest = std::max(longest, (s.soup.positions[f[k]] - s.soup.positions[f[(k + 1) % 3]]).norm());
     }
     placing = std::max(placing, 2.0 * tol::kPositionRoundingRel * largestCoordinate + tol::kSnapParam * longest);
   }
-  if (!report("euclidean-lower-bound", checkEuclideanLowerBound(d, euclid, kRel, placing))) return v;
-  if (!report("upper-bound", checkUpperBound(d, edgeGraphDijkstra(soup, c.sources), kRel, placing))) return v;
-  if (!report("lipschitz", checkLipschitz(soup, d, kRel))) return v;
-  if (c.rectangle) {
-    if (!report("planar-agreement", checkAgreement(d, euclid, kRel, placing))) return v;
-  } else if (c.planar) {
-    if (const auto ref = planarReference(mesh, soup, sourcePositions))
-      if (!report("planar-agreement", checkAgreement(d, *ref, kRel, placing))) return v;
-  }
+  return placing;
+}
 
-  // Queries at edge midpoints lie within what their edge's ends allow.
-  for (Index e = 0; e < mesh.numEdges(); ++e) {
-    const Edge& E = mesh.edge(e);
-    const double du = d[E.vertex[0]], dv = d[E.vertex[1]];
-    const double got = solver.distanceInMeshUnits(SurfacePoint::onEdge(E.vertex[0], E.vertex[1], 0.5));
-    const Vec3 mid = 0.5 * (soup.positions[E.vertex[0]] + soup.positions[E.vertex[1]]);
+/// Euclidean ≤ d ≤ edge-graph Dijkstra, Lipschitz along edges, and on planar meshes the
+/// Euclidean (rectangle) or planar-domain distance.
+bool checkDistanceOracles(const SolvedCase& s, Verdict& v) {
+  const std::vector<double>& d = s.d;
+  const std::vector<double> euclid = euclideanDistances(s.soup.positions, s.sourcePositions);
+  const double placing = sourcePlacement(s);
+  if (!report(v, "euclidean-lower-bound", checkEuclideanLowerBound(d, euclid, kRel, placing), s)) return false;
+  if (!report(v, "upper-bound", checkUpperBound(d, edgeGraphDijkstra(s.soup, s.c.sources), kRel, placing), s))
+    return false;
+  if (!report(v, "lipschitz", checkLipschitz(s.soup, d, kRel), s)) return false;
+  if (s.c.rectangle) {
+    if (!report(v, "planar-agreement", checkAgreement(d, euclid, kRel, placing), s)) return false;
+  } else if (s.c.planar) {
+    if (const auto ref = planarReference(s.mesh, s.soup, s.sourcePositions))
+      if (!report(v, "planar-agreement", checkAgreement(d, *ref, kRel, placing), s)) return false;
+  }
+  return true;
+}
+
+/// Queries at edge midpoints lie within what their edge's ends allow.
+bool checkEdgeMidpoints(const SolvedCase& s, Verdict& v) {
+  for (Index e = 0; e < s.mesh.numEdges(); ++e) {
+    const Edge& E = s.mesh.edge(e);
+    const double du = s.d[E.vertex[0]], dv = s.d[E.vertex[1]];
+    const double got = s.solver.distanceInMeshUnits(SurfacePoint::onEdge(E.vertex[0], E.vertex[1], 0.5));
+    const Vec3 mid = 0.5 * (s.soup.positions[E.vertex[0]] + s.soup.positions[E.vertex[1]]);
     if (!std::isfinite(du)) {
       if (std::isfinite(got))
-        return fail(v, "edge-query", "edge " + std::to_string(e) + " has unreachable ends but its midpoint is at " + fmt(got) + where());
+        return fail(v, "edge-query", "edge " + std::to_string(e) + " has unreachable ends but its midpoint is at " + fmt(got) + s.where()), false;
       continue;
     }
     double lower = std::max(du, dv) - 0.5 * E.length;
     double nearest = INFINITY;
-    for (const Vec3& s : sourcePositions) nearest = std::min(nearest, (s - mid).norm());
+    for (const Vec3& p : s.sourcePositions) nearest = std::min(nearest, (p - mid).norm());
     lower = std::max(lower, nearest);
     const double upper = std::min(du, dv) + 0.5 * E.length;
-    const double slack = kRel * (upper + diag);
+    const double slack = kRel * (upper + s.diag);
     if (!(got >= lower - slack && got <= upper + slack)) {
       std::ostringstream os;
       os << std::setprecision(17) << "the midpoint of edge " << e << " (" << E.vertex[0] << "-"
          << E.vertex[1] << ", ends at " << du << " and " << dv << ", length " << E.length
          << ") is at " << got << ", outside [" << lower << ", " << upper << "]";
-      return fail(v, "edge-query", os.str() + where());
+      return fail(v, "edge-query", os.str() + s.where()), false;
     }
   }
+  return true;
+}
 
-  // A traced path ends at a source and is as long as the distance.
+/// The reachable vertex farthest from the sources, or kNoIndex when none is reachable.
+Index farthestVertex(const std::vector<double>& d) {
   Index farthest = kNoIndex;
   for (Index x = 0; x < d.size(); ++x)
     if (std::isfinite(d[x]) && (farthest == kNoIndex || d[x] > d[farthest])) farthest = x;
-  if (farthest != kNoIndex && d[farthest] > 0.0) {
-    try {
-      GeodesicPath p = solver.path(SurfacePoint::atVertex(farthest));
-      p.length *= inverse;
-      for (PathPoint& q : p.points) q.position *= inverse;
-      double sum = 0.0;
-      for (std::size_t i = 0; i + 1 < p.points.size(); ++i) sum += (p.points[i + 1].position - p.points[i].position).norm();
-      double toSource = INFINITY;
-      if (!p.points.empty())
-        for (const Vec3& s : sourcePositions) toSource = std::min(toSource, (p.points.back().position - s).norm());
-      const double tolerance = kRel * (d[farthest] + diag);
-      if (p.points.empty() || !(std::abs(p.length - d[farthest]) <= tolerance) ||
-          !(std::abs(sum - p.length) <= tolerance) || !(toSource <= tolerance)) {
-        std::ostringstream os;
-        os << std::setprecision(17) << "the path from vertex " << farthest << " (distance " << d[farthest]
-           << ") has length " << p.length << ", " << p.points.size() << " points summing to " << sum
-           << ", ending " << toSource << " from the nearest source:";
-        for (const PathPoint& q : p.points)
-          os << "\n  " << formatSurfacePoint(q.where) << " at (" << q.position.x() << ", " << q.position.y()
-             << ", " << q.position.z() << ")";
-        return fail(v, "path-length", os.str() + where());
-      }
-    } catch (const InputError& e) {
-      // Its length is in file units: refused, rightly, when the distance it must equal overflows.
-      const double longest = d[farthest] + kRel * (d[farthest] + diag);
-      if (!(e.kind() == "distance-overflow" && inFileUnitsRange(longest, mesh.meshUnit()) == ScaledRange::Overflow))
-        return fail(v, "unexpected-exception", std::string("path: ") + e.what() + where());
-    } catch (const std::exception& e) {
-      return fail(v, "unexpected-exception", std::string("path: ") + e.what() + where());
+  return farthest;
+}
+
+/// A path traced from the farthest vertex ends at a source and is as long as its distance.
+bool checkTracedPath(const SolvedCase& s, Index farthest, Verdict& v) {
+  const std::vector<double>& d = s.d;
+  if (farthest == kNoIndex || !(d[farthest] > 0.0)) return true;
+  const double inverse = s.mesh.meshUnit().inverse;
+  try {
+    GeodesicPath p = s.solver.path(SurfacePoint::atVertex(farthest));
+    p.length *= inverse;
+    for (PathPoint& q : p.points) q.position *= inverse;
+    double sum = 0.0;
+    for (std::size_t i = 0; i + 1 < p.points.size(); ++i) sum += (p.points[i + 1].position - p.points[i].position).norm();
+    double toSource = INFINITY;
+    if (!p.points.empty())
+      for (const Vec3& src : s.sourcePositions) toSource = std::min(toSource, (p.points.back().position - src).norm());
+    const double tolerance = kRel * (d[farthest] + s.diag);
+    if (p.points.empty() || !(std::abs(p.length - d[farthest]) <= tolerance) ||
+        !(std::abs(sum - p.length) <= tolerance) || !(toSource <= tolerance)) {
+      std::ostringstream os;
+      os << std::setprecision(17) << "the path from vertex " << farthest << " (distance " << d[farthest]
+         << ") has length " << p.length << ", " << p.points.size() << " points summing to " << sum
+         << ", ending " << toSource << " from the nearest source:";
+      for (const PathPoint& q : p.points)
+        os << "\n  " << formatSurfacePoint(q.where) << " at (" << q.position.x() << ", " << q.position.y()
+           << ", " << q.position.z() << ")";
+      return fail(v, "path-length", os.str() + s.where()), false;
+    }
+  } catch (const InputError& e) {
+    // Its length is in file units: refused, rightly, when the distance it must equal overflows.
+    const double longest = d[farthest] + kRel * (d[farthest] + s.diag);
+    if (!(e.kind() == "distance-overflow" && inFileUnitsRange(longest, s.mesh.meshUnit()) == ScaledRange::Overflow))
+      return fail(v, "unexpected-exception", std::string("path: ") + e.what() + s.where()), false;
+  } catch (const std::exception& e) {
+    return fail(v, "unexpected-exception", std::string("path: ") + e.what() + s.where()), false;
+  }
+  return true;
+}
+
+/// With a stop distance, a second solve keeps every distance within it and drops every one
+/// beyond.
+bool checkStopDistance(const SolvedCase& s, Verdict& v) {
+  if (!s.c.stopDistance) return true;
+  GeodesicSolver stopped(s.mesh);
+  SolveOptions options;
+  options.stopDistance = *s.c.stopDistance;
+  if (!solveChecked(stopped, s.c.sources, options, v)) return v.message += s.where(), false;
+  const auto ds = stopped.vertexDistancesInMeshUnits();
+  const double stop = *s.c.stopDistance * s.mesh.meshUnit().inverse;
+  // Distances are good to kRel × diagonal: a vertex that close to the stop may go either way.
+  const double band = kRel * (stop + s.diag);
+  for (Index x = 0; x < s.d.size(); ++x) {
+    const bool within = s.d[x] <= stop - band;
+    const bool beyond = s.d[x] > stop + band;
+    if ((within && !(std::abs(ds[x] - s.d[x]) <= band)) || (beyond && ds[x] != INFINITY)) {
+      return fail(v, "stop-distance", "vertex " + std::to_string(x) + " at " + fmt(s.d[x]) + " gets " +
+                                          fmt(ds[x]) + " with stop distance " + fmt(stop) + s.where()),
+             false;
     }
   }
+  return true;
+}
 
-  // A stop distance keeps every distance within it and drops every one beyond.
-  if (c.stopDistance) {
-    GeodesicSolver stopped(mesh);
-    SolveOptions options;
-    options.stopDistance = *c.stopDistance;
-    if (!solveChecked(stopped, c.sources, options, v)) return v.message += where(), v;
-    const auto ds = stopped.vertexDistancesInMeshUnits();
-    const double stop = *c.stopDistance * inverse;
-    // Distances are good to kRel × diagonal: a vertex that close to the stop may go either way.
-    const double band = kRel * (stop + diag);
-    for (Index x = 0; x < d.size(); ++x) {
-      const bool within = d[x] <= stop - band;
-      const bool beyond = d[x] > stop + band;
-      if ((within && !(std::abs(ds[x] - d[x]) <= band)) || (beyond && ds[x] != INFINITY)) {
-        return fail(v, "stop-distance", "vertex " + std::to_string(x) + " at " + fmt(d[x]) + " gets " +
-                                            fmt(ds[x]) + " with stop distance " + fmt(stop) + where());
-      }
-    }
-  }
+/// When asked, d(a, b) = d(b, a) for a single vertex source a and the farthest vertex b.
+bool checkSymmetricDistance(const SolvedCase& s, Index farthest, Verdict& v) {
+  const SolverCase& c = s.c;
+  if (!(c.checkSymmetry && c.sources.size() == 1 && c.sources[0].kind == SurfacePoint::Kind::Vertex &&
+        farthest != kNoIndex && farthest != c.sources[0].vertex))
+    return true;
+  GeodesicSolver back(s.mesh);
+  const std::vector<SurfacePoint> from{SurfacePoint::atVertex(farthest)};
+  if (!solveChecked(back, from, {}, v)) return v.message += s.where(), false;
+  return report(v, "symmetry", checkSymmetry(s.d[farthest], back.vertexDistancesInMeshUnits()[c.sources[0].vertex], kRel),
+                s);
+}
 
-  // d(a, b) = d(b, a) for a single vertex source a and the farthest vertex b.
-  if (c.checkSymmetry && c.sources.size() == 1 && c.sources[0].kind == SurfacePoint::Kind::Vertex &&
-      farthest != kNoIndex && farthest != c.sources[0].vertex) {
-    GeodesicSolver back(mesh);
-    const std::vector<SurfacePoint> from{SurfacePoint::atVertex(farthest)};
-    if (!solveChecked(back, from, {}, v)) return v.message += where(), v;
-    if (!report("symmetry", checkSymmetry(d[farthest], back.vertexDistancesInMeshUnits()[c.sources[0].vertex], kRel))) return v;
+}  // namespace
+
+Verdict checkSolver(const SolverCase& c) {
+  Verdict v;
+  v.interesting = true;
+  auto mesh = buildMesh(c.soup, v);
+  if (!mesh) return v;
+  GeodesicSolver solver(*mesh);
+  SolvedCase s{c, *mesh, solver, soupInMeshUnits(*mesh), {}, {}, 0.0};
+
+  // The solve, with the full invariant tier and the unfolding check at every edge update.
+  InvariantChecker invariants(CheckLevel::Full, true);
+  UnfoldingChecker unfolding(*mesh, &invariants);
+  solver.setObserver(&unfolding);
+  if (!solveChecked(solver, c.sources, {}, v)) return v.message += s.where(), v;
+  v.degeneracies = solver.counters();
+  const auto meshUnitDistances = solver.vertexDistancesInMeshUnits();
+  s.d.assign(meshUnitDistances.begin(), meshUnitDistances.end());
+  {
+    std::ostringstream os;
+    os << mesh->numFaces() << " faces, " << c.sources.size() << " source(s), "
+       << solver.counters().cases << " propagation cases, " << solver.stats().intervalsAtEnd
+       << " intervals at the end";
+    v.summary = os.str();
   }
+  s.diag = mesh->boundingBoxDiagonalInMeshUnits();
+
+  // Then the distances it gave, against the oracles; the first check to fail ends the case.
+  if (!checkDistanceValues(s, v)) return v;
+  for (const SurfacePoint& p : c.sources) s.sourcePositions.push_back(surfacePointPosition(s.soup, p));
+  const Index farthest = farthestVertex(s.d);
+  if (!checkDistanceOracles(s, v)) return v;
+  if (!checkEdgeMidpoints(s, v)) return v;
+  if (!checkTracedPath(s, farthest, v)) return v;
+  if (!checkStopDistance(s, v)) return v;
+  checkSymmetricDistance(s, farthest, v);
   return v;
 }
 
