@@ -1,10 +1,10 @@
 #pragma once
 // What every fuzz target shares: turning libFuzzer's bytes into a case and a failed check into a
-// finding. The byte layouts, decoders and property checks themselves live in
-// verify/include/geodex/verify/repro.h (layout summary in docs/fuzzing.md), so that
-// `geodex repro FILE` and tests/corpus replay a corpus file exactly as the fuzzer ran it. Our own
-// little-endian ByteReader is used instead of FuzzedDataProvider: it reads front to back, so seeds
-// can be written from readable descriptions (fuzz/make_seeds.cpp) and it builds with gcc too.
+// finding. The byte layouts, decoders and property checks themselves live in verify/, one header
+// per target in verify/include/geodex/verify/cases/ (layout summary in docs/fuzzing.md), so that
+// `geodex repro FILE` and tests/corpus replay a corpus file exactly as the fuzzer ran it. The
+// bytes are read with verify's ByteReader rather than FuzzedDataProvider (cases/byte_codec.h says
+// why).
 
 #include <cstdint>
 #include <cstdlib>

@@ -1,38 +1,17 @@
-// Fuzz cases: byte formats, property checks and reproducers (see repro.h and docs/fuzzing.md).
+// What the six fuzz targets share: the dispatch by target of decode, check, describe and
+// writeSvg, and `geodex repro` (repro.h). Each target's own code is in cases/<target>.cpp.
 #include "geodex/verify/repro.h"
 
-#include <gmpxx.h>
-
 #include <algorithm>
-#include <cmath>
-#include <cstring>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
-#include <map>
-#include <numbers>
 #include <sstream>
 
-#include "geodex/check.h"
-#include "geodex/edge_intervals.h"
-#include "geodex/error.h"
-#include "geodex/geodesic_solver.h"
-#include "geodex/mesh_io.h"
-#include "geodex/observer.h"
-#include "geodex/predicates.h"
-#include "geodex/tolerance.h"
-#include "geodex/verify/invariant_checker.h"
-#include "geodex/verify/oracles.h"
-
-#include "cases/check_support.h"
-#include "cases/fig6_exact.h"
-#include "cases/local_window.h"
-#include "cases/mesh_case.h"
 #include "cases/svg.h"
+#include "geodex/error.h"
 
 namespace geodex::verify {
-
-using namespace detail;
 
 // ===  Targets ===================================================================================
 
@@ -56,19 +35,7 @@ std::optional<FuzzTarget> parseFuzzTarget(std::string_view s) {
   return std::nullopt;
 }
 
-namespace {
-
-// ===  Specs: reading and writing ================================================================
-
-}  // namespace
-
-namespace {
-
-// ===  Specs → cases =============================================================================
-
-}  // namespace
-
-// ===  Decoding ==================================================================================
+// ===  Decoding and checking ======================================================================
 
 namespace {
 
@@ -91,8 +58,6 @@ std::optional<FuzzCase> decode(FuzzTarget t, std::span<const std::uint8_t> bytes
   }
   return std::nullopt;
 }
-
-// ===  Dispatch ==================================================================================
 
 Verdict check(const FuzzCase& c) {
   return std::visit(
@@ -118,7 +83,7 @@ Verdict replay(FuzzTarget t, std::span<const std::uint8_t> bytes) {
   return check(*c);
 }
 
-// ===  Reproducers: files and targets ============================================================
+// ===  Files and targets =========================================================================
 
 std::vector<std::uint8_t> readFileBytes(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
@@ -176,7 +141,7 @@ std::optional<FuzzTarget> detectTarget(const std::string& path, std::span<const 
   return std::nullopt;
 }
 
-// ===  describe ==================================================================================
+// ===  Description and picture ===================================================================
 
 namespace {
 
@@ -210,13 +175,10 @@ void describe(FuzzTarget t, std::span<const std::uint8_t> bytes, std::ostream& o
   std::visit([&](const auto& c) { describe(c, out); }, *decoded);
 }
 
-// ===  SVG =======================================================================================
-
 void writeSvg(FuzzTarget t, std::span<const std::uint8_t> bytes, std::ostream& out) {
   const auto decoded = decode(t, bytes);
   if (!decoded) {
-    SvgDoc doc(600, 60);
-    Panel P(0, 0, 600, 60, 0, 0, 1, 1, false);
+    detail::SvgDoc doc(600, 60);
     doc.labelPx(10, 30, std::string(name(t)) + ": the target skips these bytes", 14);
     doc.write(out);
     return;
@@ -224,7 +186,7 @@ void writeSvg(FuzzTarget t, std::span<const std::uint8_t> bytes, std::ostream& o
   std::visit([&](const auto& c) { writeSvg(c, out); }, *decoded);
 }
 
-// ===  runRepro ==================================================================================
+// ===  geodex repro ==============================================================================
 
 int runRepro(const std::string& path, std::optional<FuzzTarget> target,
              const std::optional<std::string>& svgPath, std::ostream& out) {

@@ -1,8 +1,8 @@
 #pragma once
-// Fuzz cases and their reproducers: the byte formats of the libFuzzer targets in fuzz/, the
-// property checks they run, and the functions `geodex repro FILE [--target T] [--svg OUT]` is
-// made of. Everything a corpus file means is defined here (not in fuzz/), so that a reproducer
-// can be read, described, re-checked and drawn without the fuzzers.
+// The fuzz cases and their reproducers: what a corpus file means, for any of the six libFuzzer
+// targets in fuzz/, and the functions `geodex repro FILE [--target T] [--svg OUT]` is made of.
+// Everything a corpus file means is defined in verify/ (not in fuzz/), so that a reproducer can
+// be read, described, re-checked and drawn without the fuzzers.
 //
 //   std::vector<std::uint8_t> bytes = readFileBytes(path);
 //   std::optional<FuzzTarget> t = detectTarget(path, bytes);   // or parseFuzzTarget("fuzz_solver")
@@ -13,74 +13,56 @@
 //
 // or all of it in one call: `return runRepro(path, target, svgPath, std::cout);`.
 //
-// Targets and what each checks (docs/fuzzing.md has the byte layouts):
-//   fuzz_mesh_io      cases/fuzz_mesh_io.h
-//   fuzz_predicates   cases/fuzz_predicates.h
-//   fuzz_edge_update  cases/fuzz_edge_update.h
-//   fuzz_propagation  cases/fuzz_propagation.h
-//   fuzz_two_faces    cases/fuzz_two_faces.h
-//   fuzz_solver       cases/fuzz_solver.h
+// Each target's byte format, decoder, check, description and picture are in its own header,
+// which this one includes (docs/fuzzing.md has the byte layouts side by side):
+//   fuzz_mesh_io      cases/fuzz_mesh_io.h      a file through the readers and the validator
+//   fuzz_predicates   cases/fuzz_predicates.h   one Fig. 6 decision against the exact tree
+//   fuzz_edge_update  cases/fuzz_edge_update.h  one Algorithm 2 update
+//   fuzz_propagation  cases/fuzz_propagation.h  one window across one face
+//   fuzz_two_faces    cases/fuzz_two_faces.h    a source across two faces
+//   fuzz_solver       cases/fuzz_solver.h       a whole solve on a small mesh
+// and what they share: cases/fuzz_target.h (FuzzTarget, Verdict), cases/byte_codec.h (the bytes),
+// cases/source_spec.h (a source point of the two mesh targets).
 //
-// Link: this file's implementation uses GMP (exact predicates): link `gmpxx gmp` with
-// geodex_verify when calling anything declared here.
+// Link: the implementation uses GMP (exact predicates): link `gmpxx gmp` with geodex_verify when
+// calling anything declared here.
 
-#include <array>
 #include <cstdint>
 #include <iosfwd>
 #include <optional>
 #include <span>
 #include <string>
-#include <string_view>
 #include <variant>
 #include <vector>
 
-#include "geodex/degeneracy.h"
-#include "geodex/interval.h"
-#include "geodex/mesh.h"
-#include "geodex/propagate.h"
-#include "geodex/surface_point.h"
 #include "geodex/verify/cases/byte_codec.h"
 #include "geodex/verify/cases/fuzz_edge_update.h"
 #include "geodex/verify/cases/fuzz_mesh_io.h"
 #include "geodex/verify/cases/fuzz_predicates.h"
-#include "geodex/verify/cases/fuzz_solver.h"
 #include "geodex/verify/cases/fuzz_propagation.h"
+#include "geodex/verify/cases/fuzz_solver.h"
 #include "geodex/verify/cases/fuzz_target.h"
 #include "geodex/verify/cases/fuzz_two_faces.h"
 #include "geodex/verify/cases/source_spec.h"
 
 namespace geodex::verify {
 
-// === Specs: a case as its bytes describe it ====================================================
-// Each target's input is one spec, written field by field in the order below. The world's
-// lattice unit is 2^unitExp (unitExp wrapped into [−20, 20]), so every case also runs scaled.
-// Ranges are in lattice units; "nL" is the edge length's lattice value rounded up.
+// === Decoding and checking =====================================================================
 
-
-
-
-// === Cases: decoded inputs =====================================================================
-
-
+/// A decoded input of any target.
 using FuzzCase =
     std::variant<MeshIoCase, PredicateCase, EdgeUpdateCase, PropagationCase, TwoFaceCase, SolverCase>;
-
-/// Each target's decoder, description and picture, which decode, describe and writeSvg below
-/// dispatch to.
 
 /// The case the bytes describe, or nullopt when the target skips them (too long, or a shape the
 /// target does not test: a degenerate range, a mesh the validator refuses, an invalid old list).
 std::optional<FuzzCase> decode(FuzzTarget t, std::span<const std::uint8_t> bytes);
 
-// === Checks ====================================================================================
-
 /// Runs the target's checks on a decoded case, every one of them, the fuzz targets too: the full
 /// invariant tier costs fuzz_solver 2.9x the cheap tier's time and buys the pointwise minimum at
-/// every edge update and the end-of-solve coverage and vertex agreement. Never throws: an exception from the code under
-/// test is a failed check ("unexpected-exception", or the invariant an InvariantViolation names).
+/// every edge update and the end-of-solve coverage and vertex agreement. Never throws: an
+/// exception from the code under test is a failed check ("unexpected-exception", or the
+/// invariant an InvariantViolation names).
 Verdict check(const FuzzCase& c);
-
-/// The per-target checks `check` dispatches to.
 
 /// decode + check. Skipped bytes give an uninteresting passing verdict.
 Verdict replay(FuzzTarget t, std::span<const std::uint8_t> bytes);
@@ -104,8 +86,8 @@ void describe(FuzzTarget t, std::span<const std::uint8_t> bytes, std::ostream& o
 /// the list before, the incoming interval and the list after, coloured by pseudo-source;
 /// propagation — the face and the source unfolded into one plane, the window, its wedge and the
 /// child intervals; two faces — both faces unfolded into one plane, the source and the intervals
-/// after the solve, coloured by pseudo-source; solver and mesh files — the mesh projected onto its two
-/// widest axes with sources and vertex distances.
+/// after the solve, coloured by pseudo-source; solver and mesh files — the mesh projected onto
+/// its two widest axes with sources and vertex distances.
 void writeSvg(FuzzTarget t, std::span<const std::uint8_t> bytes, std::ostream& out);
 
 /// `geodex repro FILE [--target T] [--svg OUT]` in one call: detects (or takes) the target,
