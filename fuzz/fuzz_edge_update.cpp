@@ -5,7 +5,7 @@
 // tier, the same contract as inside the solver), invents no pseudo-source, and rewrites only the
 // slice the update reports. Text reproducers written by verify::writeReproducer
 // ("geodex-edge-update 1") are read too.
-// Format and check: verify/include/geodex/verify/cases/fuzz_edge_update.h.
+// Format, check and seeds: verify/include/geodex/verify/cases/fuzz_edge_update.h.
 #include "decode.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -3,7 +3,7 @@
 // validateMesh never throws; a soup it finds no error in builds a Mesh (edges of positive
 // length, corner angles in [0, π] summing to π per face) and, written back as OFF with 17
 // digits, reads back as the same soup.
-// Format and check: verify/include/geodex/verify/cases/fuzz_mesh_io.h.
+// Format, check and seeds: verify/include/geodex/verify/cases/fuzz_mesh_io.h.
 #include "decode.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

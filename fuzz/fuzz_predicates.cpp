@@ -5,7 +5,7 @@
 // in [0, 1] with t0 <= t1; every sampled ray of the wedge leaves the face inside a child
 // (coverage) and every child point is seen from s through [b0, b1] (soundness), up to 100× the
 // tolerances' angle.
-// Format and check: verify/include/geodex/verify/cases/fuzz_predicates.h.
+// Format, check and seeds: verify/include/geodex/verify/cases/fuzz_predicates.h.
 #include "decode.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

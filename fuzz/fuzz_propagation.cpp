@@ -6,7 +6,7 @@
 // 3-D; every sampled ray of the window leaves the face inside a child; children lie within their
 // edges, at most one per edge; the Fig. 6 branch equals the exact tree off ε-ambiguity. No mesh,
 // no solver.
-// Format and check: verify/include/geodex/verify/cases/fuzz_propagation.h.
+// Format, check and seeds: verify/include/geodex/verify/cases/fuzz_propagation.h.
 #include "decode.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -6,7 +6,7 @@
 // queries within their ends' bounds; the traced path as long as the distance; on planar meshes
 // d equals the Euclidean (rectangle) or planar-domain distance to 1e-9 × diagonal; optionally a
 // stop distance keeps exactly the distances within it, and d(a, b) = d(b, a).
-// Format and check: verify/include/geodex/verify/cases/fuzz_solver.h.
+// Format, check and seeds: verify/include/geodex/verify/cases/fuzz_solver.h.
 #include "decode.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -5,7 +5,7 @@
 // invariant tier holds at every edge update; distances at the vertices, at edge points and at
 // face points equal the exact two-face distance (straight within a face, else the minimum over
 // the shared edge).
-// Format and check: verify/include/geodex/verify/cases/fuzz_two_faces.h.
+// Format, check and seeds: verify/include/geodex/verify/cases/fuzz_two_faces.h.
 #include "decode.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

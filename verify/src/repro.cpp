@@ -1,4 +1,4 @@
-// What the six fuzz targets share: the dispatch by target of decode, check, describe and
+// What the six fuzz targets share: the dispatch by target of decode, check, seeds, describe and
 // writeSvg, and `geodex repro` (repro.h). Each target's own code is in cases/<target>.cpp.
 #include "geodex/verify/repro.h"
 
@@ -81,6 +81,18 @@ Verdict replay(FuzzTarget t, std::span<const std::uint8_t> bytes) {
     return v;
   }
   return check(*c);
+}
+
+std::vector<Seed> seeds(FuzzTarget t) {
+  switch (t) {
+    case FuzzTarget::MeshIo: return meshIoSeeds();
+    case FuzzTarget::Predicates: return predicateSeeds();
+    case FuzzTarget::EdgeUpdate: return edgeUpdateSeeds();
+    case FuzzTarget::Propagation: return propagationSeeds();
+    case FuzzTarget::TwoFaces: return twoFaceSeeds();
+    case FuzzTarget::Solver: return solverSeeds();
+  }
+  return {};
 }
 
 // ===  Files and targets =========================================================================

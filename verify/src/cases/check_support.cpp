@@ -31,4 +31,11 @@ std::string describeInterval(const Interval& w) {
 
 bool scalesExactly(double x, double k) { return x == 0.0 || (std::isnormal(x) && std::isnormal(x * k)); }
 
+std::string kindsNotHit(const Verdict& v, const std::vector<DegeneracyKind>& kinds) {
+  std::string missing;
+  for (DegeneracyKind k : kinds)
+    if (v.degeneracies[k] == 0) missing += " " + std::string(name(k));
+  return missing.empty() ? "" : "does not hit" + missing;
+}
+
 }  // namespace geodex::verify::detail

@@ -1,9 +1,11 @@
 #pragma once
 // What every target's check uses to word its verdict: the first broken check wins (fail), numbers
-// to 17 digits (fmt), an interval as text; and whether a value survives a scaling by a power of
-// two exactly, which the scale checks ask. Private to verify/src/cases (hence namespace detail).
+// to 17 digits (fmt), an interval as text; whether a value survives a scaling by a power of two
+// exactly, which the scale checks ask; and which degeneracies a seed missed. Private to
+// verify/src/cases (hence namespace detail).
 
 #include <string>
+#include <vector>
 
 #include "geodex/interval.h"
 #include "geodex/verify/cases/fuzz_target.h"
@@ -21,5 +23,8 @@ std::string describeInterval(const Interval& w);
 
 /// Whether x × k (k a power of two) is exact: x is zero, or x and the product are normal numbers.
 bool scalesExactly(double x, double k);
+
+/// "" when v counted every one of `kinds`, else "does not hit" and the ones it did not count.
+std::string kindsNotHit(const Verdict& v, const std::vector<DegeneracyKind>& kinds);
 
 }  // namespace geodex::verify::detail

@@ -3,15 +3,19 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <iomanip>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "check_support.h"
 #include "geodex/edge_intervals.h"
 #include "geodex/error.h"
 #include "geodex/mesh.h"
 #include "geodex/verify/invariant_checker.h"
+#include "geodex/verify/repro.h"  // FuzzCase, which the seeds' expectations take
 #include "svg.h"
 
 namespace geodex::verify {
@@ -424,6 +428,121 @@ void writeSvg(const EdgeUpdateCase& c, std::ostream& out) {
   doc.labelPx(10, 20, "fuzz_edge_update: distance functions coloured by pseudo-source" +
                           (error.empty() ? std::string() : "; insert threw: " + error), 14);
   doc.write(out);
+}
+
+// ===  Seeds =====================================================================================
+
+namespace {
+
+using Q = Quantity;
+using K = DegeneracyKind;
+Q n(int v) { return Q::lattice(v); }
+
+IntervalSpec iv(Q start, Q extent, Q sx, Q sy, Q sigma, std::uint8_t flags = 0, std::uint8_t ref = 0) {
+  IntervalSpec s;
+  s.start = start, s.extent = extent, s.sourceX = sx, s.sourceY = sy, s.sigma = sigma;
+  s.flags = flags, s.ref = ref;
+  return s;
+}
+
+/// A seed that must hit every one of `kinds` (Algorithm 2's D1–D4 reports).
+Seed edgeUpdate(const std::string& name, std::initializer_list<K> kinds, int L, std::vector<IntervalSpec> before,
+                IntervalSpec incoming, int unitExp = 0) {
+  EdgeUpdateSpec s;
+  s.unitExp = static_cast<std::int8_t>(unitExp);
+  s.edgeLength = n(L);
+  s.before = std::move(before);
+  s.incoming = incoming;
+  return {name, encode(s), [want = std::vector<K>(kinds)](const FuzzCase&, const Verdict& v) {
+            return kindsNotHit(v, want);
+          }};
+}
+
+}  // namespace
+
+std::vector<Seed> edgeUpdateSeeds() {
+  constexpr std::uint8_t kPropagated = 2, kFirstHalf = 4, kSecondHalf = 6, kRelSource = 8, kRelSigma = 16;
+  const Q zero = n(0);
+  // Edge of 16 lattice units. Old intervals: (gap before, length, source x, y, σ). Incoming:
+  // (b0, b1, source x, y, σ). ε = 1e-11 × 16 here (sources within 16 of the edge).
+  const auto left = iv(zero, n(8), n(4), n(2), zero, kPropagated);
+  const auto right = iv(zero, n(8), n(12), n(2), zero, kPropagated);
+  // A sliver a hair shorter than both neighbours where they meet (√20 at x = 8), as the rounding
+  // D1 stands for: a sliver far below them is a distance they lack, and step 3 keeps it.
+  const Q justBelow = Q::exact(std::sqrt(20.0) * (1.0 - 1e-13));
+  return {
+    edgeUpdate("D1-tiny-sliver-won-by-incoming", {K::D1}, 16, {left, right},
+               iv(n(8), n(8).nudged(2, Nudge::TinyInterval, true), n(8), justBelow, zero)),
+    edgeUpdate("D1-tiny-remainder-of-split-old-interval", {K::D1}, 16, {left, right},
+               iv(n(0), n(8).nudged(-2, Nudge::TinyInterval, true), n(4), n(1), zero)),
+    edgeUpdate("D2-tiny-overlap-at-incoming-start", {K::D2}, 16, {left},
+               iv(n(8).nudged(-3, Nudge::TinyInterval, true), n(16), n(12), n(2), zero)),
+    edgeUpdate("D2-tiny-overlap-at-incoming-end", {K::D2}, 16, {iv(n(8), n(8), n(12), n(2), zero)},
+               iv(n(0), n(8).nudged(3, Nudge::TinyInterval, true), n(4), n(2), zero)),
+    edgeUpdate("D3-tiny-gap-between-neighbours", {K::D3}, 16, {left},
+               iv(n(8).nudged(3, Nudge::TinyInterval, true), n(16), n(12), n(2), zero)),
+    edgeUpdate("D3-tiny-gap-at-edge-start", {K::D3}, 16, {},
+               iv(n(0).nudged(3, Nudge::TinyInterval, true), n(16), n(12), n(2), zero)),
+    edgeUpdate("D3-tiny-gaps-at-both-edge-ends", {K::D3}, 16, {},
+               iv(n(0).nudged(3, Nudge::TinyInterval, true), n(16).nudged(-3, Nudge::TinyInterval, true), n(8),
+                  n(2), zero)),
+    // D4: a pseudo-source near the edge with a large σ against a far one with σ = 0: Eq. 1's
+    // coefficients cancel (c² ~ 1e11) and its root is off (tests/unit/edge_intervals_test.cpp).
+    edgeUpdate("D4-far-source-against-near-source-large-sigma", {K::D4}, 10,
+               {iv(zero, n(10), Q::exact(106679.50483344488).times8(5), Q::exact(350837.94985744485).times8(5), zero)},
+               iv(n(0), n(10), Q::exact(0.02921229530964543), Q::exact(0.031554045793446041),
+                  Q::exact(366698.19360690453).times8(5))),
+    edgeUpdate("D1-tiny-incoming-inside-old-interval", {K::D1}, 16, {left, right},
+               iv(n(8).nudged(2, Nudge::TinyInterval, true), n(8).nudged(4, Nudge::TinyInterval, true), n(8),
+                  Q::exact(1e-3), zero)),
+    edgeUpdate("D2-D3-overlap-one-end-gap-other", {K::D2, K::D3}, 16,
+               {iv(zero, n(4), n(2), n(2), zero), iv(n(8), n(4), n(14), n(2), zero)},
+               iv(n(4).nudged(-3, Nudge::TinyInterval, true), n(12).nudged(-3, Nudge::TinyInterval, true), n(6),
+                  n(2), zero)),
+    // Algorithm 2 without degeneracies, for contrast and for the fuzzer to mutate from.
+    edgeUpdate("empty-list-whole-edge", {}, 16, {}, iv(n(0), n(16), n(8), n(4), zero)),
+    edgeUpdate("incoming-wins-everywhere", {}, 16, {iv(zero, n(16), n(8), n(8), n(4), kPropagated)},
+               iv(n(0), n(16), n(8), n(2), zero)),
+    edgeUpdate("incoming-loses-everywhere", {}, 16, {iv(zero, n(16), n(8), n(2), zero, kPropagated)},
+               iv(n(0), n(16), n(8), n(8), n(4))),
+    edgeUpdate("eq1-two-crossings", {}, 16, {iv(zero, n(16), n(8), n(8), zero, kPropagated)},
+               iv(n(0), n(16), n(8), n(1), n(5))),
+    edgeUpdate("eq1-one-crossing-sources-either-side", {}, 16, {iv(zero, n(16), n(0), n(4), zero, kPropagated)},
+               iv(n(0), n(16), n(16), n(4), zero)),
+    edgeUpdate("incoming-fills-gap-between-two", {}, 16,
+               {iv(zero, n(4), n(2), n(2), zero, kPropagated), iv(n(8), n(4), n(14), n(2), zero, kPropagated)},
+               iv(n(2), n(14), n(8), n(3), zero)),
+    edgeUpdate("same-source-arrives-again", {}, 16, {iv(zero, n(16), n(5), n(2), n(1), kPropagated)},
+               iv(n(0), n(16), n(5), n(2), n(1))),
+    edgeUpdate("near-equal-source-merged-by-step5", {}, 16,
+               {iv(zero, n(6), n(5), n(2), n(1), kPropagated)},
+               iv(n(6), n(16), n(0).nudged(2, Nudge::SameSource, true), n(0).nudged(2, Nudge::SameSource, true),
+                  n(0).nudged(2, Nudge::SameSource, true), kRelSource | kRelSigma, 0)),
+    edgeUpdate("tie-equal-distances-different-sources", {}, 16, {iv(zero, n(16), n(4), n(3), n(2), kPropagated)},
+               iv(n(0), n(16), n(4), n(3), n(2), 1)),
+    edgeUpdate("partially-propagated-intervals-split", {}, 16,
+               {iv(zero, n(8), n(4), n(4), zero, kFirstHalf), iv(zero, n(8), n(12), n(4), zero, kSecondHalf)},
+               iv(n(4), n(12), n(8), n(1), n(2))),
+    edgeUpdate("eight-contiguous-intervals", {}, 16,
+               {iv(zero, n(2), n(1), n(1), zero), iv(zero, n(2), n(3), n(1), zero), iv(zero, n(2), n(5), n(1), zero),
+                iv(zero, n(2), n(7), n(1), zero), iv(zero, n(2), n(9), n(1), zero), iv(zero, n(2), n(11), n(1), zero),
+                iv(zero, n(2), n(13), n(1), zero), iv(zero, n(2), n(15), n(1), zero)},
+               iv(n(0), n(16), n(8), n(2), zero)),
+    edgeUpdate("large-sigma-far-sources-scaled-1e+6", {}, 16,
+               {iv(zero, n(16), n(-32).times8(6), n(32).times8(6), zero, kPropagated)},
+               iv(n(0), n(16), n(8), n(2), n(64).times8(5)), 20),
+    edgeUpdate("tiny-edge-scaled-1e-6", {K::D1}, 16, {left, right},
+               iv(n(8), n(8).nudged(2, Nudge::TinyInterval, true), n(8), justBelow, zero), -20),
+    // Algorithm 2 step 1 resolves an overlap below ε (D2) where overlapMeetingPoint says (the
+    // shorter interval keeps a real overlap), not at the midpoint whichever function is smaller
+    // there: at the midpoint this list keeps the larger distance and breaks the pointwise minimum.
+    {.name = "pointwise-min-D2-overlap-midpoint-keeps-larger-distance",
+     .bytes = encode(EdgeUpdateSpec{.edgeLength = n(16),
+                                    .before = {iv(n(0), n(4), n(2), n(2), n(0))},
+                                    .incoming = iv(n(4).nudged(-3, Nudge::TinyInterval, true), n(16), n(8), n(2), n(0))}),
+     .expect = {},
+     .dir = "regress"},
+  };
 }
 
 }  // namespace geodex::verify

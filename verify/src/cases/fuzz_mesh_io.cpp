@@ -8,12 +8,15 @@
 #include <numbers>
 #include <optional>
 #include <sstream>
+#include <string>
+#include <variant>
 #include <vector>
 
 #include "check_support.h"
 #include "geodex/error.h"
 #include "geodex/mesh.h"
 #include "geodex/mesh_io.h"
+#include "geodex/verify/repro.h"  // FuzzCase, which the seeds' expectations take
 #include "svg.h"
 
 namespace geodex::verify {
@@ -143,6 +146,118 @@ void writeSvg(const MeshIoCase& c, std::ostream& out) {
     doc.labelPx(10, 30, std::string("fuzz_mesh_io: not a mesh: ") + e.what(), 12);
     doc.write(out);
   }
+}
+
+// ===  Seeds =====================================================================================
+
+namespace {
+
+/// A seed of the file `text` (after the format byte `hint` when it is not 0) whose reader and
+/// validator verdict must be `expected`: "ok", "rejected:<kind>", "error:<kind>" or
+/// "warning:<kind>".
+Seed meshIo(const std::string& name, const std::string& text, const std::string& expected, std::uint8_t hint = 0) {
+  std::vector<std::uint8_t> bytes;
+  if (hint != 0) bytes.push_back(hint);
+  bytes.insert(bytes.end(), text.begin(), text.end());
+  return {name, bytes, [expected](const FuzzCase& c, const Verdict&) {
+            const auto& m = std::get<MeshIoCase>(c);
+            std::string got;
+            try {
+              MeshReadResult r = readMeshFromMemory(m.bytes, "seed", m.formatHint);
+              validateMesh(r.soup, r.issues);
+              got = "ok";
+              for (const MeshIssue& i : r.issues)
+                if (expected == (i.severity == Severity::Error ? "error:" : "warning:") + i.kind) got = expected;
+            } catch (const InputError& e) {
+              got = "rejected:" + e.kind();
+            }
+            return got == expected ? "" : "gives " + got + ", not " + expected;
+          }};
+}
+
+/// A tetrahedron as a binary PLY file of either byte order.
+std::string plyBinary(bool bigEndian) {
+  std::string s = std::string("ply\nformat ") + (bigEndian ? "binary_big_endian" : "binary_little_endian") +
+                  " 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+                  "element face 4\nproperty list uchar int vertex_indices\nend_header\n";
+  auto put = [&](const void* p, std::size_t size) {
+    const auto* b = static_cast<const char*>(p);
+    for (std::size_t i = 0; i < size; ++i) s += b[bigEndian ? size - 1 - i : i];
+  };
+  const float v[4][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  for (const auto& p : v)
+    for (float x : p) put(&x, 4);
+  const int f[4][3] = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {2, 0, 3}};
+  for (const auto& t : f) {
+    s += static_cast<char>(3);
+    for (int i : t) put(&i, 4);
+  }
+  return s;
+}
+
+}  // namespace
+
+std::vector<Seed> meshIoSeeds() {
+  const std::string tetra = "OFF\n4 4 6\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 2 0 3\n";
+  return {
+    meshIo("off-tetrahedron.off", tetra, "ok"),
+    meshIo("off-counts-on-header-line-and-comments.off",
+           "# a comment\nOFF 4 2 0\n0 0 0 # origin\n1 0 0\n1 1 0\n0 1 0\n\n3 0 1 2\n3 0 2 3\n", "ok"),
+    meshIo("off-cube-quads-fan-triangulated.off",
+           "OFF\n8 6 12\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n"
+           "4 1 2 6 5\n4 2 3 7 6\n4 3 0 4 7\n",
+           "warning:polygon-triangulated"),
+    meshIo("coff-with-colours.off", "COFF\n3 1 0\n0 0 0 255 0 0 255\n1 0 0 0 255 0 255\n0 1 0 0 0 255 255\n3 0 1 2 1 1 1\n", "ok"),
+    meshIo("off-without-header-line", "3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", "ok"),
+    meshIo("obj-tetrahedron.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 3 1 4\n", "ok"),
+    meshIo("obj-negative-indices-slashes-and-groups.obj",
+           "o thing\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvn 0 0 1\ng part\nusemtl m\ns off\n"
+           "f -4/1/1 -3/1/1 -2/1/1\nf 1//1 3//1 4//1\n",
+           "ok"),
+    meshIo("obj-hint-byte-forces-obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "ok", 2),
+    meshIo("ply-ascii-tetrahedron.ply",
+           "ply\nformat ascii 1.0\ncomment seed\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+           "element face 4\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n"
+           "3 0 2 1\n3 0 1 3\n3 1 2 3\n3 2 0 3\n",
+           "ok"),
+    meshIo("ply-binary-little-endian.ply", plyBinary(false), "ok"),
+    meshIo("ply-binary-big-endian.ply", plyBinary(true), "ok"),
+    // What the reader refuses (InputError), and what the validator reports.
+    meshIo("off-truncated.off", "OFF\n4 4 6\n0 0 0\n1 0 0\n0 1 0\n", "rejected:truncated"),
+    meshIo("off-absurd-count.off", "OFF\n99999999 1 0\n0 0 0\n", "rejected:absurd-count"),
+    meshIo("off-bad-number.off", "OFF\n3 1 0\n0 0 0\n1 zero 0\n0 1 0\n3 0 1 2\n", "rejected:syntax"),
+    meshIo("off-face-too-small.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n2 0 1\n", "rejected:face-too-small"),
+    meshIo("obj-index-zero.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n", "rejected:index-out-of-range"),
+    meshIo("ply-unknown-format.ply", "ply\nformat binary_middle_endian 1.0\nend_header\n", "rejected:syntax"),
+    meshIo("empty-file", "", "rejected:unknown-format"),
+    meshIo("off-nan-coordinate.off", "OFF\n3 1 0\n0 0 0\nnan 0 0\n0 1 0\n3 0 1 2\n", "error:non-finite-coordinate"),
+    meshIo("off-index-out-of-range.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n", "error:index-out-of-range"),
+    meshIo("off-repeated-index.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 1\n", "error:repeated-index"),
+    meshIo("off-zero-length-edge.off", "OFF\n3 1 0\n0 0 0\n0 0 0\n0 1 0\n3 0 1 2\n", "error:zero-length-edge"),
+    meshIo("off-duplicate-face.off", "OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 1 2 0\n", "error:duplicate-face"),
+    meshIo("off-non-manifold-edge.off",
+           "OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0 0 1\n3 0 1 2\n3 0 1 3\n3 0 1 4\n", "error:non-manifold-edge"),
+    meshIo("off-zero-area-face.off", "OFF\n4 2 0\n0 0 0\n2 0 0\n1 0 0\n1 1 0\n3 0 1 3\n3 0 2 1\n", "warning:zero-area-face"),
+    meshIo("off-unreferenced-vertex.off", "OFF\n4 1 0\n0 0 0\n1 0 0\n0 1 0\n5 5 5\n3 0 1 2\n", "warning:unreferenced-vertex"),
+    meshIo("off-non-manifold-vertex-bowtie.off", "OFF\n5 2 0\n0 0 0\n1 1 0\n1 -1 0\n-1 1 0\n-1 -1 0\n3 0 1 2\n3 0 3 4\n",
+           "warning:non-manifold-vertex"),
+    meshIo("off-inconsistent-winding.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 2 0 3\n",
+           "warning:inconsistent-winding"),
+    meshIo("off-duplicated-position.off", "OFF\n6 2 0\n0 0 0\n1 0 0\n0 1 0\n1 0 0\n0 1 0\n1 1 0\n3 0 1 2\n3 3 5 4\n",
+           "warning:duplicate-position"),
+    meshIo("off-two-components.off", "OFF\n6 2 0\n0 0 0\n1 0 0\n0 1 0\n5 0 0\n6 0 0\n5 1 0\n3 0 1 2\n3 3 4 5\n",
+           "warning:components"),
+    // An edge between distinct positions whose length underflows to 0 (a denormal coordinate):
+    // the validator refuses it by name ('edge-length-out-of-range'), so no Mesh is built with a
+    // zero-length edge.
+    {.name = "mesh-geometry-denormal-edge-length-underflows-to-zero.off",
+     .bytes = [] {
+       const std::string t = "OFF\n3 1 0\n0 0 0\n1e-320 0 0\n0 1 0\n3 0 1 2\n";
+       return std::vector<std::uint8_t>(t.begin(), t.end());
+     }(),
+     .expect = {},
+     .dir = "regress"},
+  };
 }
 
 }  // namespace geodex::verify

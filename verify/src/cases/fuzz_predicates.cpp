@@ -5,9 +5,12 @@
 #include <cmath>
 #include <iomanip>
 #include <sstream>
+#include <string>
+#include <variant>
 
 #include "check_support.h"
 #include "fig6_exact.h"
+#include "geodex/verify/repro.h"  // FuzzCase, which the seeds' expectations take
 #include "local_window.h"
 
 namespace geodex::verify {
@@ -155,5 +158,111 @@ void describe(const PredicateCase& c, std::ostream& out) {
 }
 
 void writeSvg(const PredicateCase& c, std::ostream& out) { svgLocalWindow(c.window, out); }
+
+// ===  Seeds =====================================================================================
+// Frame of Fig. 3: v0 = (0, 0), v2 = (L, 0), the apex v1 above, the source s below e0.
+
+namespace {
+
+using Q = Quantity;
+Q n(int v) { return Q::lattice(v); }
+
+/// A seed whose window propagateLocal must decide as `expected`.
+Seed predicate(const std::string& name, Fig6Branch expected, const PredicateSpec& s) {
+  return {name, encode(s), [expected](const FuzzCase& c, const Verdict&) {
+            const auto r = propagateLocal(std::get<PredicateCase>(c).window);
+            return r.branch == expected ? std::string()
+                                        : "ends in " + std::string(geodex::name(r.branch)) + ", not " +
+                                              std::string(geodex::name(expected));
+          }};
+}
+
+PredicateSpec local(int L, Q ax, Q ay, Q b0, Q b1, Q sx, Q sy, int unitExp = 0) {
+  PredicateSpec s;
+  s.unitExp = static_cast<std::int8_t>(unitExp);
+  s.edgeLength = n(L);
+  s.apexX = ax, s.apexY = ay, s.b0 = b0, s.b1 = b1, s.sourceX = sx, s.sourceY = sy;
+  return s;
+}
+
+/// A minimized reproducer of a fixed bug, in regress/.
+Seed regress(const std::string& name, const PredicateSpec& s) {
+  return {.name = name, .bytes = encode(s), .expect = {}, .dir = "regress"};
+}
+
+}  // namespace
+
+std::vector<Seed> predicateSeeds() {
+  using B = Fig6Branch;
+  return {
+    // G1: the pseudo-source on the line of e0.
+    predicate("G1-source-at-b0", B::G1Inside, local(8, n(4), n(4), n(2), n(6), n(2), n(0))),
+    predicate("G1-source-at-b1", B::G1Inside, local(8, n(4), n(4), n(2), n(6), n(6), n(0))),
+    predicate("G1-source-inside-window-after-merge", B::G1Inside, local(8, n(4), n(4), n(2), n(6), n(3), n(0))),
+    predicate("G1-source-on-e0-line-outside-window", B::G1Outside, local(8, n(4), n(4), n(2), n(6), n(-3), n(0))),
+    predicate("G1-source-half-tolerance-below-e0", B::G1Inside,
+              local(8, n(4), n(4), n(2), n(6), n(2), n(0).nudged(-8, Nudge::Coincide, true))),
+    predicate("G1-source-half-tolerance-before-b0", B::G1Inside,
+              local(8, n(4), n(4), n(2), n(6), n(2).nudged(-8, Nudge::Coincide, true), n(0))),
+    predicate("G1-G2-G4-source-at-b0-at-v0", B::G1Inside, local(8, n(4), n(4), n(0), n(6), n(0), n(0))),
+    predicate("G1-G3-G5-source-at-b1-at-v2", B::G1Inside, local(8, n(4), n(4), n(2), n(8), n(8), n(0))),
+    predicate("G1-G2-source-at-b0-apex-above", B::G1Inside, local(8, n(2), n(4), n(2), n(6), n(2), n(0))),
+    // G2: s, b0, v1 collinear with b0 inside e0. s = b0 − (v1 − b0).
+    predicate("G2-source-b0-apex-collinear", B::G2, local(8, n(4), n(4), n(2), n(6), n(0), n(-4))),
+    predicate("G2-near-collinear-within-tolerance", B::G2,
+              local(8, n(4), n(4), n(2), n(6), n(0).nudged(8, Nudge::Collinear, true), n(-4))),
+    predicate("G2-just-outside-tolerance-inside-wedge", B::InsideWedge,
+              local(8, n(4), n(4), n(2), n(6), n(0).nudged(4, Nudge::Collinear), n(-4))),
+    predicate("G2-just-outside-tolerance-left-of-wedge", B::LeftOfWedge,
+              local(8, n(4), n(4), n(2), n(6), n(0).nudged(-4, Nudge::Collinear), n(-4))),
+    predicate("G2-b0-12eps-from-v0-collinear-not-G4", B::G2,
+              local(8, n(4), n(4), n(0).nudged(12, Nudge::Coincide), n(6), n(-4).nudged(24, Nudge::Coincide), n(-4))),
+    predicate("G2-far-source-collinear", B::G2, local(8, n(4), n(4), n(2), n(6), n(-14), n(-32))),
+    predicate("G2-scaled-1e-6", B::G2, local(8, n(4), n(4), n(2), n(6), n(0), n(-4), -20)),
+    // G3: s, b1, v1 collinear with b1 inside e0. s = b1 + (b1 − v1).
+    predicate("G3-source-b1-apex-collinear", B::G3, local(8, n(4), n(4), n(2), n(6), n(8), n(-4))),
+    predicate("G3-near-collinear-within-tolerance", B::G3,
+              local(8, n(4), n(4), n(2), n(6), n(8).nudged(-8, Nudge::Collinear, true), n(-4))),
+    predicate("G3-just-outside-tolerance-right-of-wedge", B::RightOfWedge,
+              local(8, n(4), n(4), n(2), n(6), n(8).nudged(4, Nudge::Collinear), n(-4))),
+    predicate("G3-scaled-1e+6", B::G3, local(8, n(4), n(4), n(2), n(6), n(8), n(-4), 20)),
+    // G4: s, v0 = b0, v1 collinear: the left ray runs along e1.
+    predicate("G4-source-v0-b0-collinear", B::G4, local(8, n(4), n(4), n(0), n(6), n(-4), n(-4))),
+    predicate("G4-b0-half-tolerance-from-v0", B::G4,
+              local(8, n(4), n(4), n(0).nudged(8, Nudge::Coincide, true), n(6), n(-4).nudged(16, Nudge::Coincide, true), n(-4))),
+    predicate("G4-obtuse-at-v0", B::G4, local(8, n(-2), n(4), n(0), n(6), n(1), n(-2))),
+    predicate("G4-window-whole-edge", B::G4, local(8, n(4), n(4), n(0), n(8), n(-4), n(-4))),
+    // G5: s, v2 = b1, v1 collinear: the right ray runs along e2.
+    predicate("G5-source-v2-b1-collinear", B::G5, local(8, n(4), n(4), n(2), n(8), n(12), n(-4))),
+    predicate("G5-b1-half-tolerance-from-v2", B::G5,
+              local(8, n(4), n(4), n(2), n(8).nudged(-8, Nudge::Coincide, true), n(12).nudged(-16, Nudge::Coincide, true), n(-4))),
+    predicate("G5-obtuse-at-v2", B::G5, local(8, n(10), n(4), n(2), n(8), n(7), n(-2))),
+    // Composites decided by the order of the tree: G2 is tested before G3.
+    predicate("G2-G3-both-rays-collinear-with-v1-G2-first", B::G2,
+              local(8, n(4), n(4), n(4), n(4).nudged(4, Nudge::Coincide), n(4), n(-4))),
+    // The general cases of Fig. 3.
+    predicate("left-of-wedge", B::LeftOfWedge, local(8, n(1), n(4), n(4), n(6), n(5), n(-4))),
+    predicate("right-of-wedge", B::RightOfWedge, local(8, n(7), n(4), n(2), n(4), n(3), n(-4))),
+    predicate("inside-wedge", B::InsideWedge, local(8, n(4), n(4), n(2), n(6), n(4), n(-4))),
+    predicate("left-of-wedge-b0-at-v0-fig3c", B::LeftOfWedge, local(8, n(-2), n(4), n(0), n(4), n(-1), n(-4))),
+    predicate("right-of-wedge-b1-at-v2-fig3c-mirror", B::RightOfWedge, local(8, n(10), n(4), n(4), n(8), n(9), n(-4))),
+    predicate("inside-wedge-far-source", B::InsideWedge, local(8, n(4), n(4), n(2), n(6), n(4), n(-32).times8(7))),
+    predicate("inside-wedge-grazing-source-11eps-below-e0", B::InsideWedge,
+              local(8, n(4), n(4), n(0), n(8), n(4), n(0).nudged(-11, Nudge::Coincide))),
+    predicate("left-of-wedge-tiny-window", B::LeftOfWedge,
+              local(8, n(3), n(4), n(4), n(4).nudged(20, Nudge::Coincide), n(4), n(-4))),
+    // Mesh-level: a zero-area face (apex on e0's line) and a needle below kFlatFaceRel.
+    predicate("zero-area-face-apex-on-e0", B::ZeroAreaFace, local(8, n(4), n(0), n(2), n(6), n(4), n(-4))),
+    predicate("zero-area-face-apex-beyond-v2", B::ZeroAreaFace, local(8, n(12), n(0), n(2), n(6), n(4), n(-4))),
+    predicate("zero-area-needle-below-flat-tolerance", B::ZeroAreaFace,
+              local(8, n(4), n(0).nudged(8, Nudge::FlatFace, true), n(2), n(6), n(4), n(-4))),
+    // G2 in a needle face seen by a grazing window: the face lies within the collinearity
+    // tolerance of the almost horizontal rays from s, so Fig. 6 decides G2 although the window's
+    // rays cross e1. An ambiguous branch therefore also gives the edge the ray would cross on the
+    // other side of v1 (propagate.cpp); else the whole window is lost.
+    regress("coverage-G2-needle-face-grazing-window-lost",
+            local(8, n(-6), n(0).nudged(10, Nudge::FlatFace), n(2), n(3), n(24), n(0).nudged(-2, Nudge::Coincide))),
+  };
+}
 
 }  // namespace geodex::verify

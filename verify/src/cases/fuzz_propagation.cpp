@@ -3,9 +3,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <iomanip>
 #include <sstream>
 #include <string>
+#include <variant>
 
 #include "check_support.h"
 #include "fig6_exact.h"
@@ -13,6 +15,7 @@
 #include "geodex/mesh.h"
 #include "geodex/predicates.h"
 #include "geodex/tolerance.h"
+#include "geodex/verify/repro.h"  // FuzzCase, which the seeds' expectations take
 #include "local_window.h"
 
 namespace geodex::verify {
@@ -414,6 +417,134 @@ void writeSvg(const PropagationCase& c, std::ostream& out) {
       os << (made.outcome == ChildOutcome::Empty ? "empty" : "dropped (seen from outside)");
   }
   svgLocalWindow(w, out, "fuzz_propagation", os.str());
+}
+
+// ===  Seeds =====================================================================================
+// One face v0, v2, v1 in 3-D and one interval on e0 = v0v2: b0, b1 in 16ths of |v0v2|, the source
+// in e0's frame (x from v0, y its height on the far side from v1), or on the line from v1 through
+// b0 (mode 1) or b1 (mode 2), λ × |b − v1| beyond b with λ = sourceX / 8.
+
+namespace {
+
+using Q = Quantity;
+Q n(int v) { return Q::lattice(v); }
+
+using FacePoints = std::array<std::array<Q, 3>, 3>;
+
+FacePoints facePoints(std::array<std::array<int, 3>, 3> p) {
+  FacePoints f;
+  for (int i = 0; i < 3; ++i)
+    for (int k = 0; k < 3; ++k) f[i][k] = n(p[i][k]);
+  return f;
+}
+
+struct OneFace {
+  FacePoints points;  ///< v0, v2, v1
+  Q b0, b1;
+  Q sourceX, sourceY;
+  std::uint8_t sourceMode = 0;
+  Q sigma = n(0);
+  std::uint8_t childDirections = 0;  ///< bit 0: e1 runs v1→v0, bit 1: e2 runs v2→v1
+  int unitExp = 0;
+};
+
+using PropagationExpect = std::function<std::string(const PropagationCase&, const Verdict&)>;
+
+/// A seed whose window propagateLocal must decide as `expected`, and that meets `extra`.
+Seed propagation(const std::string& name, Fig6Branch expected, const OneFace& f, PropagationExpect extra = {}) {
+  PropagationSpec s;
+  s.unitExp = static_cast<std::int8_t>(f.unitExp);
+  for (int i = 0; i < 3; ++i)
+    for (int k = 0; k < 3; ++k) s.points[i][k] = f.points[i][k];
+  s.b0 = f.b0, s.b1 = f.b1;
+  s.sourceMode = f.sourceMode;
+  s.sourceX = f.sourceX, s.sourceY = f.sourceY;
+  s.sigma = f.sigma;
+  s.childDirections = f.childDirections;
+  return {name, encode(s), [expected, extra](const FuzzCase& c, const Verdict& v) {
+            const auto& pc = std::get<PropagationCase>(c);
+            const auto r = propagateLocal(localWindowOf(pc));
+            if (r.branch != expected)
+              return "ends in " + std::string(geodex::name(r.branch)) + ", not " + std::string(geodex::name(expected));
+            return extra ? extra(pc, v) : std::string();
+          }};
+}
+
+/// The case makes `count` children (as the verdict's summary counts them).
+PropagationExpect childrenMade(int count) {
+  return [count](const PropagationCase&, const Verdict& v) {
+    const std::string want = ", " + std::to_string(count) + " of ";
+    return v.summary.find(want) != std::string::npos ? "" : "makes other than " + std::to_string(count) + " children: " + v.summary;
+  };
+}
+
+}  // namespace
+
+std::vector<Seed> propagationSeeds() {
+  using B = Fig6Branch;
+  // The face v0 = (0,0,0), v2 = (8,0,0), v1 = (4,4,0): e0's frame is the world's x-y plane, the
+  // apex at (4, 4); lattice b = k means x = k/2. A source (x, y) lies at (x, −y) below e0.
+  const FacePoints flat = facePoints({{{0, 0, 0}, {8, 0, 0}, {4, 4, 0}}});
+  // A tilted face with no coordinate axis in its plane: collinear sources come from modes 1, 2.
+  const FacePoints tilted = facePoints({{{1, 2, 3}, {9, -2, 5}, {3, 7, -4}}});
+  // Needles: the flat face's apex moved onto e0 at x = 4 (or beyond v2, at 12), then lifted.
+  const auto needle = [](int apexX, Q apexY) {
+    FacePoints f = facePoints({{{0, 0, 0}, {8, 0, 0}, {apexX, 0, 0}}});
+    f[2][1] = apexY;
+    return f;
+  };
+  return {
+    propagation("inside-wedge", B::InsideWedge, {flat, n(4), n(12), n(4), n(4)}, childrenMade(2)),
+    propagation("left-of-wedge", B::LeftOfWedge, {facePoints({{{0, 0, 0}, {8, 0, 0}, {1, 4, 0}}}), n(8), n(12), n(5), n(4)},
+                childrenMade(1)),
+    propagation("right-of-wedge", B::RightOfWedge, {facePoints({{{0, 0, 0}, {8, 0, 0}, {7, 4, 0}}}), n(4), n(8), n(3), n(4)},
+                childrenMade(1)),
+    propagation("inside-wedge-window-whole-edge-sigma-5", B::InsideWedge, {flat, n(0), n(16), n(4), n(4), 0, n(5)}),
+    propagation("inside-wedge-child-edges-backward", B::InsideWedge, {flat, n(4), n(12), n(4), n(4), 0, n(0), 3},
+                childrenMade(2)),
+    propagation("inside-wedge-e1-backward", B::InsideWedge, {flat, n(4), n(12), n(3), n(4), 0, n(0), 1}),
+    propagation("inside-wedge-tilted-face", B::InsideWedge, {tilted, n(5), n(11), n(11), n(9)}),
+    propagation("inside-wedge-far-source", B::InsideWedge, {flat, n(4), n(12), n(4), n(32).times8(6)}),
+    propagation("inside-wedge-scaled-1e-6", B::InsideWedge, {flat, n(4), n(12), n(4), n(4), 0, n(3), 0, -20}),
+    propagation("inside-wedge-scaled-1e+6", B::InsideWedge, {flat, n(4), n(12), n(4), n(4), 0, n(3), 0, 20}),
+    // G1: the source on e0's line.
+    propagation("G1-source-at-b0", B::G1Inside, {flat, n(4), n(12), n(2), n(0)}),
+    propagation("G1-source-at-b1", B::G1Inside, {flat, n(4), n(12), n(6), n(0)}),
+    propagation("G1-source-on-e0-line-outside-window", B::G1Outside, {flat, n(4), n(12), n(-3), n(0)}, childrenMade(0)),
+    propagation("G1-G2-G4-source-at-b0-at-v0", B::G1Inside, {flat, n(0), n(12), n(0), n(0)}),
+    propagation("G1-G3-G5-source-at-b1-at-v2", B::G1Inside, {flat, n(4), n(16), n(8), n(0)}),
+    propagation("G1-source-half-tolerance-below-e0", B::G1Inside,
+                {flat, n(4), n(12), n(2), n(0).nudged(4, Nudge::Coincide, true)}),
+    // G2–G5: the source on the line through the apex and a window end.
+    propagation("G2-source-b0-apex-collinear", B::G2, {flat, n(4), n(12), n(0), n(4)}),
+    propagation("G3-source-b1-apex-collinear", B::G3, {flat, n(4), n(12), n(8), n(4)}),
+    propagation("G4-source-v0-b0-collinear", B::G4, {flat, n(0), n(12), n(-4), n(4)}),
+    propagation("G5-source-v2-b1-collinear", B::G5, {flat, n(4), n(16), n(12), n(4)}),
+    propagation("G2-tilted-face-source-on-line-v1-b0", B::G2, {tilted, n(5), n(11), n(12), n(0), 1}),
+    propagation("G3-tilted-face-source-on-line-v1-b1", B::G3, {tilted, n(5), n(11), n(12), n(0), 2}),
+    propagation("G4-tilted-face-source-on-line-v1-v0", B::G4, {tilted, n(0), n(11), n(12), n(0), 1}),
+    propagation("G5-tilted-face-source-on-line-v1-v2", B::G5, {tilted, n(5), n(16), n(12), n(0), 2}),
+    propagation("G4-far-source-on-line-v1-v0", B::G4, {tilted, n(0), n(11), n(64).times8(5), n(0), 1}),
+    propagation("G2-G3-both-rays-through-apex-G2-first", B::G2,
+                {flat, n(8), n(8).nudged(4, Nudge::Coincide), n(4), n(4)}),
+    // Zero-area faces and needles.
+    propagation("zero-area-face-apex-on-e0", B::ZeroAreaFace, {needle(4, n(0)), n(4), n(12), n(4), n(4)},
+                [](const PropagationCase&, const Verdict& v) {
+                  return v.degeneracies.zeroAreaFaces > 0 ? "" : "crosses no zero-area face";
+                }),
+    propagation("zero-area-face-apex-beyond-v2", B::ZeroAreaFace,
+                {needle(12, n(0)), n(4), n(12), n(4), n(4), 0, n(0), 2}),
+    propagation("zero-area-face-apex-before-v0-tilted", B::ZeroAreaFace,
+                {facePoints({{{1, 2, 3}, {9, -2, 7}, {-3, 4, 1}}}), n(4), n(12), n(4), n(4)}),
+    // Apex heights relative to 16 lattice units: 2.5e-13 × 16 is below kFlatFaceRel × 8, 16 ε × 16
+    // is a needle of relative height 3.2e-10.
+    propagation("zero-area-needle-below-flat-tolerance", B::ZeroAreaFace,
+                {needle(4, n(0).nudged(4, Nudge::FlatFace, true)), n(4), n(12), n(4), n(4)}),
+    propagation("needle-apex-16eps-above-e0", B::InsideWedge,
+                {needle(4, n(0).nudged(16, Nudge::Coincide)), n(4), n(12), n(4), n(4)}, childrenMade(2)),
+    propagation("needle-beyond-v2-far-source-right-of-wedge", B::RightOfWedge,
+                {needle(12, n(0).nudged(16, Nudge::Coincide)), n(4), n(12), n(4), n(32).times8(6)}),
+  };
 }
 
 }  // namespace geodex::verify

@@ -3,11 +3,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <iomanip>
 #include <sstream>
 #include <stdexcept>
 #include <string>
 #include <utility>
+#include <variant>
 #include <vector>
 
 #include "check_support.h"
@@ -17,6 +19,7 @@
 #include "geodex/tolerance.h"
 #include "geodex/verify/invariant_checker.h"
 #include "geodex/verify/oracles.h"
+#include "geodex/verify/repro.h"  // FuzzCase, which the seeds' expectations take
 #include "mesh_case.h"
 #include "svg.h"
 
@@ -455,6 +458,142 @@ void writeSvg(const SolverCase& c, std::ostream& out) {
   } catch (const std::exception&) {
   }
   svgMesh(c.soup, sources, d, "fuzz_solver: vertex: distance", out);
+}
+
+// ===  Seeds =====================================================================================
+
+namespace {
+
+using Q = Quantity;
+Q n(int v) { return Q::lattice(v); }
+
+/// A grid of nx × ny cells: `levels` heights, a byte per vertex and per cell as SolverSpec says.
+SolverSpec grid(int nx, int ny, int levels, std::vector<std::uint8_t> vertexBytes, std::vector<std::uint8_t> cells,
+                std::vector<SourceSpec> sources, std::uint8_t flags = 0, Q stop = {}, int unitExp = 0) {
+  SolverSpec s;
+  s.unitExp = static_cast<std::int8_t>(unitExp);
+  s.mode = 0;
+  s.nx = static_cast<std::uint8_t>(nx - 1);
+  s.ny = static_cast<std::uint8_t>(ny - 1);
+  s.levels = static_cast<std::uint8_t>(levels);
+  s.vertexBytes = std::move(vertexBytes);
+  s.cellBytes = std::move(cells);
+  s.sources = std::move(sources);
+  s.flags = flags;
+  s.stop = stop;
+  return s;
+}
+
+/// A soup of lattice points and faces.
+SolverSpec soup(std::vector<std::array<std::int8_t, 3>> points, std::vector<std::array<std::uint8_t, 3>> faces,
+                std::vector<SourceSpec> sources, std::uint8_t flags = 0) {
+  SolverSpec s;
+  s.mode = 1;
+  s.points = std::move(points);
+  s.faces = std::move(faces);
+  s.sources = std::move(sources);
+  s.flags = flags;
+  return s;
+}
+
+using SolverExpect = std::function<std::string(const SolverCase&, const Verdict&)>;
+
+/// A seed that must meet `extra`.
+Seed solver(const std::string& name, const SolverSpec& s, SolverExpect extra = {}) {
+  return {name, encode(s), [extra](const FuzzCase& c, const Verdict& v) {
+            return extra ? extra(std::get<SolverCase>(c), v) : std::string();
+          }};
+}
+
+/// Some vertex is unreachable from the sources.
+SolverExpect someUnreachable() {
+  return [](const SolverCase& c, const Verdict&) {
+    const Mesh mesh(c.soup);
+    for (double d : exactGeodesicDistance(mesh, c.sources))
+      if (!std::isfinite(d)) return std::string();
+    return std::string("every vertex is reachable");
+  };
+}
+
+}  // namespace
+
+std::vector<Seed> solverSeeds() {
+  const std::uint8_t kRemoved = 2, kOtherDiagonal = 1;
+  auto is = [](bool rectangle, bool planar) -> SolverExpect {
+    return [=](const SolverCase& c, const Verdict&) {
+      return c.rectangle == rectangle && c.planar == planar ? "" : "planar/rectangle flags differ";
+    };
+  };
+  return {
+    // Flat grids: every interior vertex has angle sum exactly 2π; rays along the diagonals run
+    // exactly through vertices (collinear rays); distances are Euclidean.
+    solver("flat-grid-2pi-vertices-source-at-corner", grid(4, 4, 0, {}, {}, {atVertex(0)}), is(true, true)),
+    solver("flat-grid-source-at-2pi-interior-vertex", grid(4, 4, 0, {}, {}, {atVertex(12)}), is(true, true)),
+    solver("flat-grid-alternating-diagonals-two-sources",
+           grid(4, 4, 0, {}, std::vector<std::uint8_t>(16, kOtherDiagonal), {atVertex(0), atVertex(24)}), is(true, true)),
+    solver("boundary-vertex-source-mid-side", grid(4, 4, 0, {}, {}, {atVertex(2)}), is(true, true)),
+    solver("source-on-an-edge-midpoint", grid(4, 4, 0, {}, {}, {onEdge(10, 0, n(8))})),
+    solver("source-on-an-edge-within-snap-of-vertex", grid(4, 4, 0, {}, {}, {onEdge(10, 0, n(0).nudged(8, Nudge::SnapParam, true))})),
+    solver("source-inside-a-face", grid(4, 4, 0, {}, {}, {inFace(9, n(3), n(5))})),
+    solver("three-sources-vertex-edge-face", grid(8, 4, 0, {}, {}, {atVertex(0), onEdge(20, 1, n(4)), inFace(50, n(5), n(5))})),
+    // Mesh-level cases.
+    solver("disconnected-part-unreachable", grid(4, 1, 0, {}, {0, kRemoved, 0, 0}, {atVertex(0)}), someUnreachable()),
+    solver("unreferenced-vertex-corner-cell-removed", grid(3, 3, 0, {}, {kRemoved}, {atVertex(5)})),
+    solver("l-shape-planar-nonconvex-reflex-corner",
+           grid(4, 4, 0, {}, {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, kRemoved, kRemoved, 0, 0, kRemoved, kRemoved}, {atVertex(0)}),
+           is(false, true)),
+    solver("square-with-hole-planar",
+           grid(4, 4, 0, {}, {0, 0, 0, 0, 0, kRemoved, kRemoved, 0, 0, kRemoved, kRemoved, 0, 0, 0, 0, 0}, {atVertex(0)}),
+           is(false, true)),
+    // Height fields: the centre of a 2 × 2 grid (vertex 4) as a saddle (angle sum > 2π) and a cone.
+    solver("saddle-vertex-height-field", grid(2, 2, 3, {1, 0, 1, 2, 1, 2, 1, 0, 1}, {}, {atVertex(0)})),
+    solver("saddle-vertex-as-source", grid(2, 2, 3, {1, 0, 1, 2, 1, 2, 1, 0, 1}, {}, {atVertex(4)})),
+    solver("cone-vertex-peak", grid(2, 2, 4, {0, 0, 0, 0, 3, 0, 0, 0, 0}, {}, {atVertex(0)})),
+    solver("terraced-steps-height-field",
+           grid(4, 4, 4, {0, 0, 1, 1, 2, 0, 1, 1, 2, 2, 1, 1, 2, 3, 3, 1, 2, 2, 3, 3, 2, 2, 3, 3, 3}, {}, {atVertex(0)})),
+    solver("terraced-steps-scaled-1e-6",
+           grid(4, 4, 4, {0, 0, 1, 1, 2, 0, 1, 1, 2, 2, 1, 1, 2, 3, 3, 1, 2, 2, 3, 3, 2, 2, 3, 3, 3}, {}, {atVertex(0)}, 0, {},
+                -20)),
+    solver("saddle-scaled-1e+6", grid(2, 2, 3, {1, 0, 1, 2, 1, 2, 1, 0, 1}, {}, {atVertex(0)}, 0, {}, 20)),
+    solver("moved-vertex-needle-faces", grid(3, 3, 0, {0, 0, 0, 0, 0, 0x10, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}, {}, {atVertex(0)}),
+           is(false, false)),
+    solver("moved-vertex-zero-area-face-in-grid",
+           grid(2, 2, 0, {0, 0, 0, 0, 0x90, 0, 0, 0, 0}, {}, {atVertex(0)})),
+    // Lattice soups.
+    solver("zero-area-face-between-two-sources",
+           soup({{0, 0, 0}, {2, 0, 0}, {4, 0, 0}, {2, 2, 0}, {2, -2, 1}}, {{0, 1, 3}, {1, 2, 3}, {0, 2, 1}, {0, 4, 2}},
+                {atVertex(3), atVertex(4)}),
+           [](const SolverCase&, const Verdict& v) {
+             return v.degeneracies.zeroAreaFaces > 0 ? "" : "crosses no zero-area face";
+           }),
+    solver("non-manifold-vertex-bowtie",
+           soup({{0, 0, 0}, {3, 1, 0}, {3, -1, 0}, {-3, 1, 1}, {-3, -1, 1}}, {{0, 1, 2}, {0, 3, 4}}, {atVertex(1)})),
+    solver("inconsistent-winding-bent-quad",
+           soup({{0, 0, 0}, {4, 0, 0}, {4, 4, 2}, {0, 4, 0}}, {{0, 1, 2}, {2, 0, 3}}, {atVertex(1)})),
+    solver("duplicated-position-crack",
+           soup({{0, 0, 0}, {4, 0, 0}, {2, 3, 0}, {4, 0, 0}, {2, 3, 0}, {6, 3, 1}}, {{0, 1, 2}, {3, 5, 4}}, {atVertex(0)}),
+           someUnreachable()),
+    solver("closed-cube-cone-vertices",
+           soup({{0, 0, 0}, {4, 0, 0}, {4, 4, 0}, {0, 4, 0}, {0, 0, 4}, {4, 0, 4}, {4, 4, 4}, {0, 4, 4}},
+                {{0, 2, 1}, {0, 3, 2}, {4, 5, 6}, {4, 6, 7}, {0, 1, 5}, {0, 5, 4}, {1, 2, 6}, {1, 6, 5}, {2, 3, 7}, {2, 7, 6},
+                 {3, 0, 4}, {3, 4, 7}},
+                {atVertex(0)})),
+    solver("closed-tetrahedron-edge-source",
+           soup({{0, 0, 0}, {6, 0, 0}, {3, 5, 0}, {3, 2, 5}}, {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {2, 0, 3}}, {onEdge(0, 0, n(5))})),
+    // Options: a stop distance half-way, and d(a, b) = d(b, a).
+    solver("stop-distance-half-way", grid(4, 4, 0, {}, {}, {atVertex(0)}, 1, n(3))),
+    solver("symmetry-vertex-to-farthest",
+           grid(3, 3, 3, {0, 1, 2, 1, 2, 1, 2, 1, 0, 1, 0, 1, 2, 1, 2, 1}, {}, {atVertex(0)}, 2)),
+    // Path tracing through a zero-area face: the tracer prices each step through every face at
+    // the point, so the path from vertex 4, reaching (2, 0, 0) on the long edge of the zero-area
+    // face (0, 2, 1), passes through that face along its line to vertex 1 at the same position
+    // instead of turning to vertex 0 (path.cpp; tests/unit/geodesic_solver_test.cpp).
+    {.name = "path-length-through-zero-area-face",
+     .bytes = encode(soup({{0, 0, 0}, {2, 0, 0}, {4, 0, 0}, {2, 2, 0}, {2, -2, 1}},
+                          {{0, 1, 3}, {1, 2, 3}, {0, 2, 1}, {0, 4, 2}}, {atVertex(3)})),
+     .expect = {},
+     .dir = "regress"},
+  };
 }
 
 }  // namespace geodex::verify

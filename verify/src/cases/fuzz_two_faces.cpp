@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
+#include <initializer_list>
 #include <iomanip>
 #include <sstream>
 #include <string>
@@ -16,6 +18,7 @@
 #include "geodex/tolerance.h"
 #include "geodex/verify/invariant_checker.h"
 #include "geodex/verify/oracles.h"
+#include "geodex/verify/repro.h"  // FuzzCase, which the seeds' expectations take
 #include "mesh_case.h"
 #include "svg.h"
 
@@ -245,6 +248,89 @@ void writeSvg(const TwoFaceCase& c, std::ostream& out) {
   doc.dot(G, at(c.source), 6, "#d62728");
   doc.labelPx(20, 22, "fuzz_two_faces: faces B (blue) and A (sand) unfolded, intervals and pseudo-sources by colour" + status, 13);
   doc.write(out);
+}
+
+// ===  Seeds =====================================================================================
+
+namespace {
+
+using Q = Quantity;
+using K = DegeneracyKind;
+Q n(int v) { return Q::lattice(v); }
+
+/// A seed on the two faces with lattice positions `pts` (v0, v2, v1, w) that must hit every one
+/// of `kinds` in the solve, and meet `extra`.
+Seed twoFaces(const std::string& name, std::initializer_list<K> kinds, std::array<std::array<int, 3>, 4> pts,
+              SourceSpec source, std::uint8_t winding = 0, int unitExp = 0,
+              std::function<std::string(const Verdict&)> extra = {}) {
+  TwoFaceSpec s;
+  s.unitExp = static_cast<std::int8_t>(unitExp);
+  for (int i = 0; i < 4; ++i)
+    for (int k = 0; k < 3; ++k) s.points[i][k] = n(pts[i][k]);
+  s.winding = winding;
+  s.source = source;
+  return {name, encode(s), [want = std::vector<K>(kinds), extra](const FuzzCase&, const Verdict& v) {
+            if (std::string missing = kindsNotHit(v, want); !missing.empty()) return missing;
+            return extra ? extra(v) : std::string();
+          }};
+}
+
+/// An edge between distinct positions whose length underflows to 0 (denormal coordinates): a
+/// zero-length edge gives its windows the range [0, 0] and breaks Algorithm 2's precondition, so
+/// the validator refuses edges outside [tol::kMinEdgeLength, tol::kMaxEdgeLength] by name
+/// ('edge-length-out-of-range') and the target skips these bytes.
+Seed denormalEdgeRefused() {
+  TwoFaceSpec p;
+  const int pts[4][3] = {{0, 0, 0}, {0, 0, 0}, {4, 6, 0}, {4, -6, 0}};
+  for (int i = 0; i < 4; ++i)
+    for (int k = 0; k < 3; ++k) p.points[i][k] = n(pts[i][k]);
+  p.points[1][0] = Q::exact(2.3715151000379834e-322);
+  p.source = atVertex(3);
+  return {.name = "internal-check-denormal-edge-length-underflows-to-zero",
+          .bytes = encode(p),
+          .expect = {},
+          .dir = "regress",
+          .refusedNow = true};
+}
+
+}  // namespace
+
+std::vector<Seed> twoFaceSeeds() {
+  return {
+    // Points: v0, v2 (the shared edge), v1 (apex of face B), w (apex of face A). Vertex indices
+    // 0 = v0, 1 = v2, 2 = v1, 3 = w; face 0 = B, face 1 = A.
+    twoFaces("planar-quad-source-at-w", {}, {{{0, 0, 0}, {8, 0, 0}, {4, 6, 0}, {4, -6, 0}}}, atVertex(3)),
+    twoFaces("bent-quad-source-in-face-A", {}, {{{0, 0, 0}, {8, 0, 0}, {4, 6, 0}, {4, -4, 5}}},
+                inFace(1, n(4), n(6))),
+    twoFaces("bent-quad-source-in-face-B", {}, {{{0, 0, 0}, {8, 0, 0}, {3, 5, -4}, {4, -4, 5}}},
+                inFace(0, n(8), n(4))),
+    twoFaces("source-on-shared-edge", {}, {{{0, 0, 0}, {8, 0, 0}, {4, 6, 0}, {4, -6, 3}}},
+                onEdge(1, 0, n(8))),
+    twoFaces("G4-source-w-v0-v1-collinear-unfolded", {K::G4}, {{{0, 0, 0}, {8, 0, 0}, {-4, 6, 0}, {4, -6, 0}}},
+                atVertex(3)),
+    twoFaces("G5-source-w-v2-v1-collinear-unfolded", {K::G5}, {{{0, 0, 0}, {8, 0, 0}, {12, 6, 0}, {4, -6, 0}}},
+                atVertex(3)),
+    twoFaces("G4-bent-collinear-after-unfolding", {K::G4}, {{{0, 0, 0}, {8, 0, 0}, {-3, 6, 0}, {3, 0, -6}}},
+                atVertex(3)),
+    twoFaces("boundary-vertex-source-v1", {}, {{{0, 0, 0}, {8, 0, 0}, {4, 6, 0}, {4, -4, 5}}}, atVertex(2)),
+    twoFaces("G1-zero-area-face-A-source-on-e0-line", {K::G1}, {{{0, 0, 0}, {8, 0, 0}, {4, 6, 0}, {12, 0, 0}}},
+                atVertex(3)),
+    twoFaces("source-at-v0-on-shared-edge", {}, {{{0, 0, 0}, {8, 0, 0}, {4, 6, 2}, {4, -4, 5}}}, atVertex(0)),
+    twoFaces("zero-area-face-B", {}, {{{0, 0, 0}, {8, 0, 0}, {4, 0, 0}, {4, -6, 0}}}, atVertex(3),
+                0, 0, [](const Verdict& v) { return v.degeneracies.zeroAreaFaces > 0 ? "" : "crosses no zero-area face"; }),
+    twoFaces("zero-area-face-B-apex-beyond-edge", {}, {{{0, 0, 0}, {8, 0, 0}, {12, 0, 0}, {4, -6, 0}}},
+                atVertex(3)),
+    twoFaces("folded-faces-overlapping", {}, {{{0, 0, 0}, {8, 0, 0}, {4, 6, 0}, {5, 3, 0}}}, atVertex(3)),
+    twoFaces("obtuse-faces-reflex-unfolding", {}, {{{0, 0, 0}, {8, 0, 0}, {-6, 2, 0}, {14, -2, 0}}}, atVertex(3)),
+    twoFaces("source-on-edge-within-snap-of-vertex", {}, {{{0, 0, 0}, {8, 0, 0}, {4, 6, 0}, {4, -6, 2}}},
+                onEdge(1, 1, n(0).nudged(8, Nudge::SnapParam, true))),
+    twoFaces("face-source-near-shared-edge", {}, {{{0, 0, 0}, {8, 0, 0}, {4, 6, 1}, {4, -6, 2}}},
+                inFace(1, n(8), n(8).nudged(-16, Nudge::Coincide))),
+    twoFaces("inconsistent-winding", {}, {{{0, 0, 0}, {8, 0, 0}, {4, 6, 0}, {4, -4, 5}}}, atVertex(3), 1),
+    twoFaces("scaled-1e-6-bent", {}, {{{0, 0, 0}, {8, 0, 0}, {3, 5, -4}, {4, -4, 5}}}, atVertex(3), 0, -20),
+    twoFaces("scaled-1e+6-bent", {}, {{{0, 0, 0}, {8, 0, 0}, {3, 5, -4}, {4, -4, 5}}}, atVertex(3), 0, 20),
+    denormalEdgeRefused(),
+  };
 }
 
 }  // namespace geodex::verify

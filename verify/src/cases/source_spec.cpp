@@ -5,6 +5,30 @@
 
 namespace geodex::verify {
 
+SourceSpec atVertex(int v) {
+  SourceSpec s;
+  s.kind = 0;
+  s.element = static_cast<std::uint8_t>(v);
+  return s;
+}
+
+SourceSpec onEdge(int f, int k, Quantity t) {
+  SourceSpec s;
+  s.kind = 1;
+  s.element = static_cast<std::uint8_t>(f);
+  s.corner = static_cast<std::uint8_t>(k);
+  s.t = t;
+  return s;
+}
+
+SourceSpec inFace(int f, Quantity a, Quantity b) {
+  SourceSpec s;
+  s.kind = 2;
+  s.element = static_cast<std::uint8_t>(f);
+  s.a = a, s.b = b;
+  return s;
+}
+
 SourceSpec readSourceSpec(ByteReader& r) {
   SourceSpec s;
   s.kind = r.u8();

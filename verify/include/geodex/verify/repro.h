@@ -13,16 +13,16 @@
 //
 // or all of it in one call: `return runRepro(path, target, svgPath, std::cout);`.
 //
-// Each target's byte format, decoder, check, description and picture are in its own header,
-// which this one includes (docs/fuzzing.md has the byte layouts side by side):
+// Each target's byte format, decoder, check, description, picture and seeds are in its own
+// header, which this one includes (docs/fuzzing.md has the byte layouts side by side):
 //   fuzz_mesh_io      cases/fuzz_mesh_io.h      a file through the readers and the validator
 //   fuzz_predicates   cases/fuzz_predicates.h   one Fig. 6 decision against the exact tree
 //   fuzz_edge_update  cases/fuzz_edge_update.h  one Algorithm 2 update
 //   fuzz_propagation  cases/fuzz_propagation.h  one window across one face
 //   fuzz_two_faces    cases/fuzz_two_faces.h    a source across two faces
 //   fuzz_solver       cases/fuzz_solver.h       a whole solve on a small mesh
-// and what they share: cases/fuzz_target.h (FuzzTarget, Verdict), cases/byte_codec.h (the bytes),
-// cases/source_spec.h (a source point of the two mesh targets).
+// and what they share: cases/fuzz_target.h (FuzzTarget, Verdict, Seed), cases/byte_codec.h (the
+// bytes), cases/source_spec.h (a source point of the two mesh targets).
 //
 // Link: the implementation uses GMP (exact predicates): link `gmpxx gmp` with geodex_verify when
 // calling anything declared here.
@@ -49,10 +49,6 @@ namespace geodex::verify {
 
 // === Decoding and checking =====================================================================
 
-/// A decoded input of any target.
-using FuzzCase =
-    std::variant<MeshIoCase, PredicateCase, EdgeUpdateCase, PropagationCase, TwoFaceCase, SolverCase>;
-
 /// The case the bytes describe, or nullopt when the target skips them (too long, or a shape the
 /// target does not test: a degenerate range, a mesh the validator refuses, an invalid old list).
 std::optional<FuzzCase> decode(FuzzTarget t, std::span<const std::uint8_t> bytes);
@@ -66,6 +62,10 @@ Verdict check(const FuzzCase& c);
 
 /// decode + check. Skipped bytes give an uninteresting passing verdict.
 Verdict replay(FuzzTarget t, std::span<const std::uint8_t> bytes);
+
+/// The target's committed corpus as readable descriptions (predicateSeeds(), …), which
+/// fuzz/make_seeds writes and checks.
+std::vector<Seed> seeds(FuzzTarget t);
 
 // === Reproducers ===============================================================================
 

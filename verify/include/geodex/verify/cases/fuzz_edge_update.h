@@ -74,4 +74,9 @@ void describe(const EdgeUpdateCase& c, std::ostream& out);
 /// pseudo-sources unfolded below the edge.
 void writeSvg(const EdgeUpdateCase& c, std::ostream& out);
 
+/// The committed corpus (corpus/fuzz_edge_update/): one or more seeds per Algorithm 2
+/// degeneracy D1–D4 and their composites, each named after what it must hit, updates without
+/// degeneracies to mutate from, and the regress files that can be described.
+std::vector<Seed> edgeUpdateSeeds();
+
 }  // namespace geodex::verify

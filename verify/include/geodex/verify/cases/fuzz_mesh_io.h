@@ -10,6 +10,7 @@
 #include <ostream>
 #include <span>
 #include <string>
+#include <vector>
 
 #include "geodex/verify/cases/fuzz_target.h"
 
@@ -37,5 +38,10 @@ Verdict checkMeshIo(const MeshIoCase& c);
 void describe(const MeshIoCase& c, std::ostream& out);
 /// The mesh read, projected onto its two widest axes (or the reader's error).
 void writeSvg(const MeshIoCase& c, std::ostream& out);
+
+/// The committed corpus (corpus/fuzz_mesh_io/): files of every format and flavour the readers
+/// take, and files each reader error and validator issue is named after, and the regress files
+/// that can be described.
+std::vector<Seed> meshIoSeeds();
 
 }  // namespace geodex::verify

@@ -47,4 +47,9 @@ void describe(const PredicateCase& c, std::ostream& out);
 /// The face, the window, its wedge and the children (local_window.h's picture).
 void writeSvg(const PredicateCase& c, std::ostream& out);
 
+/// The committed corpus (corpus/fuzz_predicates/): one or more seeds per Fig. 6 branch, G1–G5
+/// and their composites, each named after the branch it must end in, and the regress files
+/// that can be described.
+std::vector<Seed> predicateSeeds();
+
 }  // namespace geodex::verify

@@ -70,4 +70,8 @@ void describe(const PropagationCase& c, std::ostream& out);
 /// them, and childInterval's intervals in the footer.
 void writeSvg(const PropagationCase& c, std::ostream& out);
 
+/// The committed corpus (corpus/fuzz_propagation/): seeds per Fig. 6 branch on flat, tilted and
+/// needle faces, with child edges either way round, each named after the branch it must end in.
+std::vector<Seed> propagationSeeds();
+
 }  // namespace geodex::verify

@@ -78,4 +78,9 @@ void describe(const SolverCase& c, std::ostream& out);
 /// The mesh projected onto its two widest axes, the sources, and each vertex's distance.
 void writeSvg(const SolverCase& c, std::ostream& out);
 
+/// The committed corpus (corpus/fuzz_solver/): flat grids, holes, L shapes, saddles, cones,
+/// terraces, moved vertices and lattice soups with sources on vertices, edges and faces, each
+/// named after the mesh-level case it is, and the regress files that can be described.
+std::vector<Seed> solverSeeds();
+
 }  // namespace geodex::verify

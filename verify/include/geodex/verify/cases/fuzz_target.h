@@ -1,14 +1,17 @@
 #pragma once
-// The six fuzz targets and what a check of one of their cases returns (Verdict). Each target's
-// byte format, decoder, check, description, picture and seeds are in cases/<target>.h, beside
-// the libFuzzer main of the same name in fuzz/; geodex/verify/repro.h dispatches by target and
-// runs `geodex repro`.
+// The six fuzz targets, what a check of one of their cases returns (Verdict), and a corpus file
+// described readably (Seed). Each target's byte format, decoder, check, description, picture and
+// seeds are in cases/<target>.h, named after the libFuzzer main in fuzz/; geodex/verify/repro.h
+// dispatches by target and runs `geodex repro`.
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <variant>
+#include <vector>
 
 #include "geodex/degeneracy.h"
 
@@ -41,6 +44,34 @@ struct Verdict {
   /// G1–G5 (Fig. 6 branches) and D1–D4 (Algorithm 2 reports) the case hit.
   DegeneracyCounters degeneracies;
   bool ok() const { return failed.empty(); }
+};
+
+// Each target's decoded input, defined in its cases/<target>.h.
+struct MeshIoCase;
+struct PredicateCase;
+struct EdgeUpdateCase;
+struct PropagationCase;
+struct TwoFaceCase;
+struct SolverCase;
+/// A decoded input of any target.
+using FuzzCase =
+    std::variant<MeshIoCase, PredicateCase, EdgeUpdateCase, PropagationCase, TwoFaceCase, SolverCase>;
+
+/// A corpus file described readably. Each target's cases/<target>.h returns its own
+/// (predicateSeeds(), solverSeeds(), …; seeds(FuzzTarget) in repro.h asks the right one), and
+/// fuzz/make_seeds writes them to corpus/<target>/<dir>/<name>, or with --check verifies that the
+/// committed files are exactly these bytes and still are what their names say.
+struct Seed {
+  std::string name;
+  std::vector<std::uint8_t> bytes;
+  /// Returns "" when the seed is what its name says, else why not.
+  std::function<std::string(const FuzzCase&, const Verdict&)> expect;
+  /// "seed", or "regress" for reproducers of bugs (written here when they can be described).
+  std::string dir = "seed";
+  /// A regress file named open-*: a bug not fixed yet; the check it fails (with GEODEX_CHECKS).
+  std::string openCheck = {};
+  /// A reproducer whose fix is that the input is now refused, so the target skips its bytes.
+  bool refusedNow = false;
 };
 
 }  // namespace geodex::verify

@@ -49,4 +49,9 @@ void describe(const TwoFaceCase& c, std::ostream& out);
 /// pseudo-source.
 void writeSvg(const TwoFaceCase& c, std::ostream& out);
 
+/// The committed corpus (corpus/fuzz_two_faces/): bent, flat, folded and zero-area pairs of
+/// faces with sources on vertices, edges and faces, named after what they must hit, and the
+/// regress files that can be described.
+std::vector<Seed> twoFaceSeeds();
+
 }  // namespace geodex::verify

@@ -21,6 +21,14 @@ struct SourceSpec {
                              ///< (reflected when a + b > 1)
 };
 
+// Builders for readable seeds (the mesh targets' seeds()).
+/// Vertex v.
+SourceSpec atVertex(int v);
+/// On the edge from corner k to corner k + 1 of face f, at t (lattice 0..16 over 16).
+SourceSpec onEdge(int f, int k, Quantity t);
+/// In face f with barycentrics a, b (lattice 0..16 over 16) and 1 − a − b.
+SourceSpec inFace(int f, Quantity a, Quantity b);
+
 SourceSpec readSourceSpec(ByteReader& r);
 void writeSourceSpec(ByteWriter& w, const SourceSpec& s);
 
