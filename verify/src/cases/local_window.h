@@ -19,8 +19,8 @@ double sinAngle(const Vec2& a, const Vec2& b);
 /// Whether the Fig. 6 tree must decide w and its unit-scale copy u (atUnitScale) bit for bit
 /// alike: every value scales exactly, and each is zero or within 2^±100 of the face's size, so
 /// that no product of four of them (sideOfRay) leaves the normal range at either scale. (A window
-/// 1e-300 of its edge wide is far below what the solver keeps, D1; its crossings then round in
-/// the subnormal range, differently at each scale.)
+/// that much narrower than its edge is far below what the solver keeps, D1; its crossings round
+/// in the subnormal range, differently at each scale.)
 bool decidedAlikeAtUnitScale(const LocalWindow& w, const LocalWindow& u);
 
 /// Whether two runs of the Fig. 6 tree ended alike, bit for bit: the leaf and every child.
