@@ -32,10 +32,15 @@ std::string describeInterval(const Interval& w) {
 bool scalesExactly(double x, double k) { return x == 0.0 || (std::isnormal(x) && std::isnormal(x * k)); }
 
 std::string kindsNotHit(const Verdict& v, const std::vector<DegeneracyKind>& kinds) {
-  std::string missing;
-  for (DegeneracyKind k : kinds)
-    if (v.degeneracies[k] == 0) missing += " " + std::string(name(k));
-  return missing.empty() ? "" : "does not hit" + missing;
+  // Appended in place: gcc 12 takes `"…" + missing` for an overlapping memcpy (-Wrestrict).
+  std::string why = "does not hit";
+  const std::size_t prefix = why.size();
+  for (DegeneracyKind k : kinds) {
+    if (v.degeneracies[k] != 0) continue;
+    why += ' ';
+    why += name(k);
+  }
+  return why.size() == prefix ? std::string() : why;
 }
 
 }  // namespace geodex::verify::detail
