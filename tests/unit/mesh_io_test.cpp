@@ -1,4 +1,4 @@
-// Tests for solver/src/mesh_io.cpp: OFF, OBJ and PLY readers (from memory), every reader error
+// Tests for solver/src/mesh_io/: OFF, OBJ and PLY readers (from memory), every reader error
 // and every validation finding, robustness against damaged bytes, and the shared real meshes.
 
 #include "geodex/mesh_io.h"
