@@ -135,7 +135,56 @@ struct PlyHeader {
   PlyRoles faceRoles;
 };
 
-PlyHeader parsePlyHeader(LineReader& lines, const SoupBuilder& builder) {
+/// "format ascii 1.0", "format binary_little_endian 1.0" or "format binary_big_endian 1.0".
+PlyEncoding readPlyFormat(Tokens& tokens, int lineNumber, const SoupBuilder& builder) {
+  std::string_view token;
+  if (!tokens.next(token)) token = {};
+  if (token == "ascii") return PlyEncoding::Ascii;
+  if (token == "binary_little_endian") return PlyEncoding::LittleEndian;
+  if (token == "binary_big_endian") return PlyEncoding::BigEndian;
+  builder.fail("syntax", lineNumber, "unknown PLY format " + shown(token));
+}
+
+/// "element NAME COUNT".
+PlyElement readPlyElement(Tokens& tokens, int lineNumber, const SoupBuilder& builder) {
+  std::string_view name;
+  std::string_view countToken;
+  long long count = 0;
+  if (!tokens.next(name) || !tokens.next(countToken) || !parseInteger(countToken, count) ||
+      count < 0 || !tokens.atEnd()) {
+    builder.fail("syntax", lineNumber, "expected 'element NAME COUNT'");
+  }
+  PlyElement element;
+  element.name = std::string(name);
+  element.count = static_cast<std::uint64_t>(count);
+  element.line = lineNumber;
+  return element;
+}
+
+/// "property TYPE NAME" or "property list COUNTTYPE TYPE NAME".
+PlyProperty readPlyProperty(Tokens& tokens, int lineNumber, const SoupBuilder& builder) {
+  PlyProperty property;
+  std::string_view typeToken;
+  std::string_view name;
+  bool valid = tokens.next(typeToken);
+  if (valid && typeToken == "list") {
+    property.isList = true;
+    std::string_view countType;
+    valid = tokens.next(countType) && parsePlyType(countType, property.countType) &&
+            tokens.next(typeToken);
+  }
+  valid = valid && parsePlyType(typeToken, property.type) && tokens.next(name) && tokens.atEnd();
+  if (!valid) {
+    builder.fail("syntax", lineNumber,
+                 "expected 'property TYPE NAME' or 'property list COUNTTYPE TYPE NAME'");
+  }
+  property.name = std::string(name);
+  return property;
+}
+
+/// The header's lines from "ply" to "end_header": its format and its elements with their
+/// properties, in file order.
+PlyHeader readPlyHeaderLines(LineReader& lines, const SoupBuilder& builder) {
   PlyHeader header;
   std::string_view line;
   std::string_view token;
@@ -152,57 +201,28 @@ PlyHeader parsePlyHeader(LineReader& lines, const SoupBuilder& builder) {
     if (keyword == "end_header") {
       sawEnd = true;
     } else if (keyword == "format") {
-      if (!tokens.next(token)) token = {};
-      if (token == "ascii") {
-        header.encoding = PlyEncoding::Ascii;
-      } else if (token == "binary_little_endian") {
-        header.encoding = PlyEncoding::LittleEndian;
-      } else if (token == "binary_big_endian") {
-        header.encoding = PlyEncoding::BigEndian;
-      } else {
-        builder.fail("syntax", lineNumber, "unknown PLY format " + shown(token));
-      }
+      header.encoding = readPlyFormat(tokens, lineNumber, builder);
       sawFormat = true;
     } else if (keyword == "element") {
-      PlyElement element;
-      std::string_view countToken;
-      long long count = 0;
-      if (!tokens.next(token) || !tokens.next(countToken) || !parseInteger(countToken, count) ||
-          count < 0 || !tokens.atEnd()) {
-        builder.fail("syntax", lineNumber, "expected 'element NAME COUNT'");
-      }
-      element.name = std::string(token);
-      element.count = static_cast<std::uint64_t>(count);
-      element.line = lineNumber;
-      header.elements.push_back(std::move(element));
+      header.elements.push_back(readPlyElement(tokens, lineNumber, builder));
     } else if (keyword == "property") {
       if (header.elements.empty()) {
         builder.fail("syntax", lineNumber, "property before any element");
       }
-      PlyProperty property;
-      std::string_view typeToken;
-      bool valid = tokens.next(typeToken);
-      if (valid && typeToken == "list") {
-        property.isList = true;
-        std::string_view countType;
-        valid = tokens.next(countType) && parsePlyType(countType, property.countType) &&
-                tokens.next(typeToken);
-      }
-      valid = valid && parsePlyType(typeToken, property.type) && tokens.next(token) &&
-              tokens.atEnd();
-      if (!valid) {
-        builder.fail("syntax", lineNumber,
-                     "expected 'property TYPE NAME' or 'property list COUNTTYPE TYPE NAME'");
-      }
-      property.name = std::string(token);
-      header.elements.back().properties.push_back(std::move(property));
+      header.elements.back().properties.push_back(readPlyProperty(tokens, lineNumber, builder));
     } else {
       builder.fail("syntax", lineNumber, shown(keyword) + " is not a PLY header keyword");
     }
   }
   if (!sawEnd) builder.fail("truncated", lines.lineNumber(), "PLY header without 'end_header'");
   if (!sawFormat) builder.fail("syntax", lines.lineNumber(), "PLY header without 'format'");
+  return header;
+}
 
+/// Finds the one "vertex" and the one "face" element and the properties the soup is built from:
+/// the first scalar x, y and z, and the first list named vertex_indices or vertex_index.
+/// `endLine` is the header's last line, named when an element is missing.
+void findVertexAndFaceElements(PlyHeader& header, int endLine, const SoupBuilder& builder) {
   for (std::size_t e = 0; e < header.elements.size(); ++e) {
     const PlyElement& element = header.elements[e];
     const bool isVertex = element.name == "vertex";
@@ -233,14 +253,19 @@ PlyHeader parsePlyHeader(LineReader& lines, const SoupBuilder& builder) {
                    "the face element lacks a list property vertex_indices (or vertex_index)");
     }
   }
-  if (header.vertexElement < 0) builder.fail("syntax", lines.lineNumber(), "no vertex element");
-  if (header.faceElement < 0) builder.fail("syntax", lines.lineNumber(), "no face element");
+  if (header.vertexElement < 0) builder.fail("syntax", endLine, "no vertex element");
+  if (header.faceElement < 0) builder.fail("syntax", endLine, "no face element");
   if (header.elements[header.vertexElement].count >= kMaxElements) {
     builder.fail("absurd-count", header.elements[header.vertexElement].line,
                  "the header announces " +
                      std::to_string(header.elements[header.vertexElement].count) +
                      " vertices, more than 32-bit indices can address");
   }
+}
+
+PlyHeader parsePlyHeader(LineReader& lines, const SoupBuilder& builder) {
+  PlyHeader header = readPlyHeaderLines(lines, builder);
+  findVertexAndFaceElements(header, lines.lineNumber(), builder);
   return header;
 }
 

@@ -53,6 +53,40 @@ std::string detectFormat(std::string_view bytes) {
   return "";
 }
 
+/// The whole file, or InputError("io") naming why it cannot be read.
+std::string readFileBytes(const std::string& path) {
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(path, error)) {
+    throw InputError("io", path + ": cannot read: " +
+                               (error ? error.message() : std::string("not a regular file")));
+  }
+  std::ifstream file(path, std::ios::binary);
+  if (!file) {
+    throw InputError("io", path + ": cannot open: " + std::strerror(errno));
+  }
+  file.seekg(0, std::ios::end);
+  const std::streamoff size = file.tellg();
+  file.seekg(0, std::ios::beg);
+  if (size < 0) throw InputError("io", path + ": cannot read (not a regular file?)");
+  std::string bytes(static_cast<std::size_t>(size), '\0');
+  if (!file.read(bytes.data(), size)) throw InputError("io", path + ": read error");
+  return bytes;
+}
+
+/// "off", "obj" or "ply" from the file name's extension (any case), or "" for any other.
+std::string formatOfExtension(const std::string& path) {
+  std::string format;
+  const std::size_t dot = path.find_last_of('.');
+  const std::size_t slash = path.find_last_of("/\\");
+  if (dot != std::string::npos && (slash == std::string::npos || dot > slash)) {
+    const std::string_view extension = std::string_view(path).substr(dot + 1);
+    for (const char* known : {"off", "obj", "ply"}) {
+      if (detail::equalsIgnoringCase(extension, known)) format = known;
+    }
+  }
+  return format;
+}
+
 }  // namespace
 
 MeshReadResult readMeshFromMemory(std::string_view bytes, const std::string& nameForMessages,
@@ -79,32 +113,8 @@ MeshReadResult readMeshFromMemory(std::string_view bytes, const std::string& nam
 }
 
 MeshReadResult readMesh(const std::string& path) {
-  std::error_code error;
-  if (!std::filesystem::is_regular_file(path, error)) {
-    throw InputError("io", path + ": cannot read: " +
-                               (error ? error.message() : std::string("not a regular file")));
-  }
-  std::ifstream file(path, std::ios::binary);
-  if (!file) {
-    throw InputError("io", path + ": cannot open: " + std::strerror(errno));
-  }
-  file.seekg(0, std::ios::end);
-  const std::streamoff size = file.tellg();
-  file.seekg(0, std::ios::beg);
-  if (size < 0) throw InputError("io", path + ": cannot read (not a regular file?)");
-  std::string bytes(static_cast<std::size_t>(size), '\0');
-  if (!file.read(bytes.data(), size)) throw InputError("io", path + ": read error");
-
-  std::string format;
-  const std::size_t dot = path.find_last_of('.');
-  const std::size_t slash = path.find_last_of("/\\");
-  if (dot != std::string::npos && (slash == std::string::npos || dot > slash)) {
-    const std::string_view extension = std::string_view(path).substr(dot + 1);
-    for (const char* known : {"off", "obj", "ply"}) {
-      if (detail::equalsIgnoringCase(extension, known)) format = known;
-    }
-  }
-  return readMeshFromMemory(bytes, path, format);
+  const std::string bytes = readFileBytes(path);
+  return readMeshFromMemory(bytes, path, formatOfExtension(path));
 }
 
 Mesh loadMesh(const std::string& path, std::vector<MeshIssue>* warnings) {
