@@ -33,12 +33,15 @@ MeshReadResult readMesh(const std::string& path);
 MeshReadResult readMeshFromMemory(std::string_view bytes, const std::string& nameForMessages,
                                   const std::string& formatHint);
 
-/// Checks a soup for everything the solver or the user should know, appending to `issues`:
-/// errors (the solver refuses the mesh): non-finite coordinates, index out of range, repeated
-/// index in a face, zero-length edge in a face, duplicate faces, edge with more than two faces;
-/// warnings (handled): zero-area faces, non-manifold vertices, unreferenced
-/// vertices (distance +inf), duplicated vertex positions, inconsistent winding, several
-/// components (+inf across).
+/// Checks a soup for everything the solver or the user should know, appending to `issues` one
+/// issue per rule the soup breaks, whose kind is the rule's name (each rule is a function of the
+/// same name in camelCase in solver/src/mesh_io/validate_mesh.cpp):
+/// errors (the solver refuses the mesh): non-finite-coordinate, index-out-of-range,
+/// repeated-index (in a face), zero-length-edge (in a face), edge-length-out-of-range and
+/// edge-length-spread (lengths geodex cannot compute with), duplicate-face, non-manifold-edge
+/// (more than two faces);
+/// warnings (handled): zero-area-face, non-manifold-vertex, unreferenced-vertex (distance +inf),
+/// duplicate-position, inconsistent-winding, components (several; +inf across).
 void validateMesh(const TriangleSoup& soup, std::vector<MeshIssue>& issues);
 
 /// readMesh + validateMesh + Mesh construction; throws InputError with the first error.
