@@ -33,12 +33,29 @@ struct UnionFind {
 }  // namespace
 
 Mesh::Mesh(TriangleSoup soup) : soup_(std::move(soup)) {
+  refuseFacesWithoutUnfolding();
+  chooseMeshUnit();
+  refuseUncomputableEdgeLengths();
+  buildEdges();
+  sortEdgesAlongSpace();
+  buildFaceFrames();
+  measureCornerAngles();
+  buildVertexAdjacency();
+  sumVertexAngles();
+  markBoundaryVertices();
+  findPseudoSourceVertices();
+  labelComponents();
+  measureBoundingBox();
+}
+
+// ===  Refusing what has no unfolding  ===========================================================
+
+// Non-finite coordinates, indices out of range, a repeated index in a face, a zero-length edge:
+// no frame can be built for such a face.
+void Mesh::refuseFacesWithoutUnfolding() const {
   const auto& P = soup_.positions;
   const auto& F = soup_.faces;
   const std::size_t nv = P.size();
-  const std::size_t nf = F.size();
-
-  // ===  Refuse what has no unfolding ==========================================================
   for (std::size_t v = 0; v < nv; ++v) {
     if (!isFinite(P[v])) {
       throw InputError("non-finite-coordinate", where(soup_, soup_.vertexLines, v) + "vertex " +
@@ -46,7 +63,7 @@ Mesh::Mesh(TriangleSoup soup) : soup_(std::move(soup)) {
                                                     " has a non-finite coordinate");
     }
   }
-  for (std::size_t f = 0; f < nf; ++f) {
+  for (std::size_t f = 0; f < F.size(); ++f) {
     const auto& t = F[f];
     for (int k = 0; k < 3; ++k) {
       if (t[k] >= nv) {
@@ -70,28 +87,45 @@ Mesh::Mesh(TriangleSoup soup) : soup_(std::move(soup)) {
       }
     }
   }
+}
 
-  // ===  Mesh units: the largest coordinate of a vertex that faces use, to a power of two ========
+// The largest coordinate magnitude of a vertex that faces use, to a power of two (MeshUnit).
+void Mesh::chooseMeshUnit() {
   double largest = 0.0;
-  for (const auto& t : F)
-    for (Index v : t) largest = std::max(largest, P[v].cwiseAbs().maxCoeff());
+  for (const auto& t : soup_.faces)
+    for (Index v : t) largest = std::max(largest, soup_.positions[v].cwiseAbs().maxCoeff());
   unit_ = meshUnitOf(largest);
-  const auto at = [&](Index v) -> Vec3 { return P[v] * unit_.inverse; };  // exact
-  for (std::size_t f = 0; f < nf; ++f) {
+}
+
+// Every edge length must be one geodex computes with (EdgeLengthProblem): not so short against
+// the mesh unit that its lengths times the tolerances underflow, and a normal double in the
+// file's units, so that distances scale back.
+void Mesh::refuseUncomputableEdgeLengths() const {
+  const auto& F = soup_.faces;
+  for (std::size_t f = 0; f < F.size(); ++f) {
     const auto& t = F[f];
     for (int k = 0; k < 3; ++k) {
-      const double length = (at(t[(k + 1) % 3]) - at(t[k])).norm();
+      const double length =
+          (positionInMeshUnits(t[(k + 1) % 3]) - positionInMeshUnits(t[k])).norm();
       const EdgeLengthProblem problem = edgeLengthProblem(length, unit_);
       if (problem != EdgeLengthProblem::None) {
         throw InputError(edgeLengthProblemKind(problem),
-                         where(soup_, soup_.faceLines, f) + "face " + std::to_string(f) + ": edge " +
-                             std::to_string(t[k]) + "-" + std::to_string(t[(k + 1) % 3]) + " " +
+                         where(soup_, soup_.faceLines, f) + "face " + std::to_string(f) +
+                             ": edge " + std::to_string(t[k]) + "-" +
+                             std::to_string(t[(k + 1) % 3]) + " " +
                              describeEdgeLengthProblem(problem, length, unit_));
       }
     }
   }
+}
 
-  // ===  Edges ===================================================================================
+// ===  Edges and face frames  ====================================================================
+
+// One edge per vertex pair, from the faces' sides sorted by pair; refuses an edge with more than
+// two faces, which has no single face across it to unfold into.
+void Mesh::buildEdges() {
+  const auto& F = soup_.faces;
+  const std::size_t nf = F.size();
   struct HalfEdge {
     Index a, b, face;
     int local;
@@ -125,25 +159,28 @@ Mesh::Mesh(TriangleSoup soup) : soup_(std::move(soup)) {
       throw InputError("non-manifold-edge", os.str());
     }
     const Index e = static_cast<Index>(edges_.size());
-    Edge edge{{half[i].a, half[i].b}, {half[i].face, j - i == 2 ? half[i + 1].face : kNoIndex},
-              (at(half[i].b) - at(half[i].a)).norm()};
+    Edge edge{{half[i].a, half[i].b},
+              {half[i].face, j - i == 2 ? half[i + 1].face : kNoIndex},
+              (positionInMeshUnits(half[i].b) - positionInMeshUnits(half[i].a)).norm()};
     edges_.push_back(edge);
     for (std::size_t k = i; k < j; ++k) faceEdges_[half[k].face][half[k].local] = e;
     i = j;
   }
-  sortEdgesAlongSpace();
+}
 
-  // ===  Face frames and corner angles ===========================================================
+// Each face unfolded onto each of its edges (Fig. 3): the edge on the x-axis, the apex above it.
+void Mesh::buildFaceFrames() {
+  const auto& F = soup_.faces;
+  const std::size_t nf = F.size();
   frames_.resize(3 * nf);
-  cornerAngles_.resize(3 * nf);
   for (Index f = 0; f < nf; ++f) {
     for (int k = 0; k < 3; ++k) {
       const Index e = faceEdges_[f][k];
       const Edge& edge = edges_[e];
       const Index apex = F[f][(k + 2) % 3];
-      const Vec3 origin = at(edge.vertex[0]);
-      const Vec3 dir = (at(edge.vertex[1]) - origin) / edge.length;
-      const Vec3 rel = at(apex) - origin;
+      const Vec3 origin = positionInMeshUnits(edge.vertex[0]);
+      const Vec3 dir = (positionInMeshUnits(edge.vertex[1]) - origin) / edge.length;
+      const Vec3 rel = positionInMeshUnits(apex) - origin;
       const double x = rel.dot(dir);
       const double y = rel.cross(dir).norm();
       FaceFrame& fr = frames_[3 * f + k];
@@ -156,16 +193,33 @@ Mesh::Mesh(TriangleSoup soup) : soup_(std::move(soup)) {
                              edges_[kNext].vertex[1] == edge.vertex[0];
       fr.edgeToV0 = nextHasV0 ? kNext : kPrev;
       fr.edgeToV2 = nextHasV0 ? kPrev : kNext;
+    }
+  }
+}
 
-      // Corner angle at corner k from atan2(|u × v|, u · v): accurate for needles and caps. The
-      // sides are normalized first: |u × v| is a product of two lengths, squared by the norm.
-      const Vec3 u = (at(F[f][(k + 1) % 3]) - at(F[f][k])).normalized();
-      const Vec3 v = (at(F[f][(k + 2) % 3]) - at(F[f][k])).normalized();
+// Corner angle at corner k from atan2(|u × v|, u · v): accurate for needles and caps. The sides
+// are normalized first: |u × v| is a product of two lengths, squared by the norm.
+void Mesh::measureCornerAngles() {
+  const auto& F = soup_.faces;
+  const std::size_t nf = F.size();
+  cornerAngles_.resize(3 * nf);
+  for (Index f = 0; f < nf; ++f) {
+    for (int k = 0; k < 3; ++k) {
+      const Vec3 corner = positionInMeshUnits(F[f][k]);
+      const Vec3 u = (positionInMeshUnits(F[f][(k + 1) % 3]) - corner).normalized();
+      const Vec3 v = (positionInMeshUnits(F[f][(k + 2) % 3]) - corner).normalized();
       cornerAngles_[3 * f + k] = std::atan2(u.cross(v).norm(), u.dot(v));
     }
   }
+}
 
-  // ===  Vertex adjacency (CSR) ==================================================================
+// ===  Vertices  =================================================================================
+
+// The faces and the edges around each vertex, in compressed rows (CSR).
+void Mesh::buildVertexAdjacency() {
+  const auto& F = soup_.faces;
+  const std::size_t nv = soup_.positions.size();
+  const std::size_t nf = F.size();
   vertexFaceStart_.assign(nv + 1, 0);
   for (const auto& t : F)
     for (Index v : t) ++vertexFaceStart_[v + 1];
@@ -190,45 +244,62 @@ Mesh::Mesh(TriangleSoup soup) : soup_(std::move(soup)) {
       vertexEdgeList_[fill[edges_[e].vertex[1]]++] = e;
     }
   }
+}
 
-  // ===  Angle sums, boundary, pseudo-sources ====================================================
-  angleSums_.assign(nv, 0.0);
-  for (Index f = 0; f < nf; ++f)
+void Mesh::sumVertexAngles() {
+  const auto& F = soup_.faces;
+  angleSums_.assign(soup_.positions.size(), 0.0);
+  for (Index f = 0; f < F.size(); ++f)
     for (int k = 0; k < 3; ++k) angleSums_[F[f][k]] += cornerAngles_[3 * f + k];
-  boundaryVertex_.assign(nv, 0);
+}
+
+// The ends of every edge with one face.
+void Mesh::markBoundaryVertices() {
+  boundaryVertex_.assign(soup_.positions.size(), 0);
   for (const Edge& e : edges_) {
     if (e.face[1] == kNoIndex) boundaryVertex_[e.vertex[0]] = boundaryVertex_[e.vertex[1]] = 1;
   }
+}
+
+// Where geodesics may bend (isPseudoSourceVertex): boundary vertices, saddles, and vertices
+// where several fans meet.
+void Mesh::findPseudoSourceVertices() {
+  const std::size_t nv = soup_.positions.size();
   pseudoSource_.assign(nv, 0);
   for (Index v = 0; v < nv; ++v) {
-    // A vertex where several fans meet (non-manifold vertex) joins surfaces that share only that
-    // point: geodesics cross from one fan to another through it, so it is a pseudo-source too.
-    const auto faces = vertexFaces(v);
-    bool severalFans = false;
-    if (faces.size() > 1) {
-      std::vector<Index> parent(faces.size());
-      std::iota(parent.begin(), parent.end(), 0);
-      auto find = [&](Index x) {
-        while (parent[x] != x) x = parent[x] = parent[parent[x]];
-        return x;
-      };
-      auto slot = [&](Index f) {
-        return static_cast<Index>(std::find(faces.begin(), faces.end(), f) - faces.begin());
-      };
-      for (Index e : vertexEdges(v)) {
-        if (edges_[e].face[1] != kNoIndex) parent[find(slot(edges_[e].face[0]))] = find(slot(edges_[e].face[1]));
-      }
-      Index roots = 0;
-      for (Index i = 0; i < faces.size(); ++i) roots += find(i) == i;
-      severalFans = roots > 1;
-    }
-    pseudoSource_[v] = boundaryVertex_[v] || severalFans ||
+    pseudoSource_[v] = boundaryVertex_[v] || joinsSeveralFans(v) ||
                        angleSums_[v] > 2.0 * std::numbers::pi + tol::kFlatVertexAngle;
   }
+}
 
-  // ===  Components and scale ====================================================================
+// A vertex where several fans meet (non-manifold vertex) joins surfaces that share only that
+// point: geodesics cross from one fan to another through it, so it is a pseudo-source too.
+bool Mesh::joinsSeveralFans(Index v) const {
+  const auto faces = vertexFaces(v);
+  if (faces.size() <= 1) return false;
+  std::vector<Index> parent(faces.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  auto find = [&](Index x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  auto slot = [&](Index f) {
+    return static_cast<Index>(std::find(faces.begin(), faces.end(), f) - faces.begin());
+  };
+  for (Index e : vertexEdges(v)) {
+    if (edges_[e].face[1] == kNoIndex) continue;
+    parent[find(slot(edges_[e].face[0]))] = find(slot(edges_[e].face[1]));
+  }
+  Index roots = 0;
+  for (Index i = 0; i < faces.size(); ++i) roots += find(i) == i;
+  return roots > 1;
+}
+
+// Components through shared vertices; unreferenced vertices belong to none (kNoIndex).
+void Mesh::labelComponents() {
+  const std::size_t nv = soup_.positions.size();
   UnionFind uf(nv);
-  for (const auto& t : F) {
+  for (const auto& t : soup_.faces) {
     uf.unite(t[0], t[1]);
     uf.unite(t[1], t[2]);
   }
@@ -240,11 +311,15 @@ Mesh::Mesh(TriangleSoup soup) : soup_(std::move(soup)) {
     if (label[r] == kNoIndex) label[r] = static_cast<Index>(numComponents_++);
     component_[v] = label[r];
   }
+}
+
+// The bounding box of the vertices that faces use, in mesh units.
+void Mesh::measureBoundingBox() {
   bool any = false;
   Vec3 lo, hi;
-  for (Index v = 0; v < nv; ++v) {
+  for (Index v = 0; v < soup_.positions.size(); ++v) {
     if (!isReferenced(v)) continue;
-    const Vec3 p = at(v);
+    const Vec3 p = positionInMeshUnits(v);
     lo = any ? lo.cwiseMin(p) : p;
     hi = any ? hi.cwiseMax(p) : p;
     any = true;
@@ -272,9 +347,8 @@ std::uint64_t mortonCode(std::uint32_t x, std::uint32_t y, std::uint32_t z) {
 
 // Edges numbered along a Z-order curve through their midpoints: the wavefront sweeps space, and
 // with this order the interval lists, edge records and frames it touches at one time lie close
-// together in memory (on an 82K-face icosphere the solve spent a sixth of its time waiting for
-// the first read of a popped interval's list). Edge numbers are internal: callers name edges by
-// their vertices.
+// together in memory, so the first read of a popped interval's list seldom waits on memory. Edge
+// numbers are internal: callers name edges by their vertices.
 void Mesh::sortEdgesAlongSpace() {
   if (edges_.empty()) return;
   const auto P = [&](Index v) -> Vec3 { return positionInMeshUnits(v); };

@@ -156,7 +156,21 @@ class Mesh {
   const TriangleSoup& soup() const { return soup_; }
 
  private:
+  // The build phases of the constructor, in the order it runs them (mesh.cpp).
+  void refuseFacesWithoutUnfolding() const;
+  void chooseMeshUnit();
+  void refuseUncomputableEdgeLengths() const;
+  void buildEdges();
   void sortEdgesAlongSpace();
+  void buildFaceFrames();
+  void measureCornerAngles();
+  void buildVertexAdjacency();
+  void sumVertexAngles();
+  void markBoundaryVertices();
+  void findPseudoSourceVertices();
+  bool joinsSeveralFans(Index v) const;
+  void labelComponents();
+  void measureBoundingBox();
 
   TriangleSoup soup_;
   std::vector<Edge> edges_;
