@@ -25,7 +25,9 @@ on). A mutant that does not compile is reported as such and left out of the scor
 
 Results go to FILE (default build/mutation/results.jsonl, one JSON object per mutant, reused: a
 mutant already there with the same source line is not run again), the report to
-docs/mutation.md (every mutant, its verdict and the test that killed it).
+docs/mutation.md (every mutant, its verdict and the test that killed it). A survivor argued
+equivalent (no input can tell it from the original) is listed in scripts/mutation-equivalents.json
+by its hash with the evidence; the report shows it as equivalent and leaves it out of the score.
 """
 
 import argparse
@@ -251,12 +253,24 @@ def mutate_one(work, m, presets, log):
         subprocess.run(["git", "checkout", "--", m["file"]], cwd=work, check=True)
 
 
-def report(mutants, results, path, seed):
+def load_equivalents(path):
+    """Mutant hash -> the evidence that it cannot change any output (scripts/mutation-equivalents.json)."""
+    if not os.path.exists(path):
+        return {}
+    with open(path) as f:
+        return json.load(f)
+
+
+def report(mutants, results, path, seed, equivalents):
     rows = []
     counts = {}
     for m in mutants:
         r = results.get(m["id"])
         verdict = r["verdict"] if r else "not run"
+        evidence = equivalents.get(m["id"].rsplit(":", 1)[1])
+        if verdict == "survived" and evidence:
+            verdict = "equivalent"
+            r = dict(r, by=evidence)
         counts[verdict] = counts.get(verdict, 0) + 1
         change = "`%s` → `%s`" % (code_part(m["before"]).strip()[:70], code_part(m["after"]).strip()[:70])
         rows.append("| %s | %s:%d | %s | %s | %s | %s |" % (
@@ -269,9 +283,11 @@ def report(mutants, results, path, seed):
                 "in its own git worktree: built with the release preset and tested (unit tests, properties with "
                 "CI's seed, then the whole release ctest with the corpus replay), and when those miss it, with the "
                 "debug preset (checks on).\n\n" % seed)
-        f.write("Killed %d of %d scored mutants (%.1f %%); %d did not compile; %d not run yet.\n\n" % (
-            counts.get("killed", 0), scored, 100.0 * counts.get("killed", 0) / scored if scored else 0.0,
-            counts.get("did not compile", 0), counts.get("not run", 0)))
+        f.write("Killed %d of %d scored mutants (%.1f %%); %d argued equivalent "
+                "(scripts/mutation-equivalents.json: the evidence is in the last column); %d did not "
+                "compile; %d not run yet.\n\n" % (
+                    counts.get("killed", 0), scored, 100.0 * counts.get("killed", 0) / scored if scored else 0.0,
+                    counts.get("equivalent", 0), counts.get("did not compile", 0), counts.get("not run", 0)))
         f.write("| id | where | operator | change | verdict | killed by |\n|---|---|---|---|---|---|\n")
         f.write("\n".join(rows) + "\n")
 
@@ -337,8 +353,10 @@ def main():
             with open(a.results, "a") as f:
                 f.write(json.dumps(r) + "\n")
             sys.stderr.write("%s %s (%.0f s)\n" % (r["verdict"], r["by"], r["seconds"]))
-    report(catalogue(a.seed), results, a.report, a.seed)
-    survived = [m["id"] for m in catalogue(a.seed) if results.get(m["id"], {}).get("verdict") == "survived"]
+    equivalents = load_equivalents(os.path.join(ROOT, "scripts", "mutation-equivalents.json"))
+    report(catalogue(a.seed), results, a.report, a.seed, equivalents)
+    survived = [m["id"] for m in catalogue(a.seed) if results.get(m["id"], {}).get("verdict") == "survived"
+                and m["id"].rsplit(":", 1)[1] not in equivalents]
     print("report: %s; survivors: %s" % (a.report, ", ".join(survived) or "none"))
     return 0
 
