@@ -158,6 +158,7 @@ class Solver {
     s["shadows_closed"] = st.shadowsClosed;
     const DegeneracyCounters& c = solver_.counters();
     s["cases"] = c.cases;
+    s["degenerate_cases"] = c.degenerateCases;  // a G1–G5 leaf or a D1–D4 repair (docs/paper.md)
     for (std::size_t k = 0; k < kNumDegeneracyKinds; ++k)
       s[py::str(std::string(name(static_cast<DegeneracyKind>(k))))] = c.count[k];
     return s;
@@ -264,7 +265,8 @@ PYBIND11_MODULE(_geodex, m) {
       points an (N, 3) array from the target back to the source, length its length (inf and no
       points when unreachable);
   .stats: the last solve's counters (windows propagated, intervals, all propagation cases and
-      the degenerate cases G1-G5 and D1-D4 of Liu, Zhou & Hu 2007).
+      the degenerate cases G1-G5 and D1-D4 of Liu, Zhou & Hu 2007, and degenerate_cases: the
+      cases with any of them, the paper's Table 1 rate read as in docs/paper.md).
 Different Solver objects solve in parallel threads (the GIL is released while solving).)")
       .def(py::init<py::handle, py::handle>(), py::arg("V"), py::arg("F"))
       .def("distances", &Solver::distances, py::arg("sources"), py::kw_only(),

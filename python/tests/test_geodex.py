@@ -102,9 +102,11 @@ def test_stats_name_the_degenerate_cases():
     solver = geodex.Solver(*grid(3))
     solver.distances(0)
     s = solver.stats
-    for key in ["cases", "windows_propagated", "G1", "G2", "G3", "G4", "G5", "D1", "D2", "D3", "D4"]:
+    for key in ["cases", "degenerate_cases", "windows_propagated", "G1", "G2", "G3", "G4", "G5",
+                "D1", "D2", "D3", "D4"]:
         assert key in s
     assert s["windows_propagated"] > 0
+    assert s["degenerate_cases"] <= s["cases"]
 
 
 def test_any_array_like():
