@@ -94,30 +94,22 @@ class GeodesicSolver {
   std::span<const ResolvedPoint> sources() const { return sources_; }
 
  private:
+  /// What the wavefront queue holds: one side of an edge with windows still to propagate, keyed
+  /// by the smallest distance among them, or a vertex to turn into a pseudo-source.
   struct QueueEntry {
-    double key;  ///< the interval's minDistance() when queued, or the vertex's distance
-    double x;    ///< where the interval had it (argMinDistance())
-    Index edge;  ///< kNoIndex: a pseudo-source event of `vertex`
-    /// Interval: its index in the edge's list when queued (where to look first), and in the top
-    /// two bits its minAt(). Pseudo-source event: the vertex.
-    std::uint32_t packed;
+    double key;  ///< pendingKey_ of the edge side when queued, or the vertex's distance
+    Index edge;  ///< kNoIndex: a pseudo-source event of vertex `which`
+    std::uint32_t which;  ///< the side (Interval::side) of the windows, or the vertex
 
-    static QueueEntry interval(const Interval& w, Index edge, std::size_t index) {
-      return {w.minDistance(), w.argMinDistance(), edge,
-              static_cast<std::uint32_t>(std::min<std::size_t>(index, kHintMask)) |
-                  (static_cast<std::uint32_t>(w.minAt()) << 30)};
-    }
-    static QueueEntry pseudoSource(Index v, double d) { return {d, 0.0, kNoIndex, v}; }
-    std::size_t hint() const { return packed & kHintMask; }
-    Interval::MinAt minAt() const { return static_cast<Interval::MinAt>(packed >> 30); }
-    Index vertex() const { return packed; }
-    static constexpr std::uint32_t kHintMask = (1u << 30) - 1;
+    static QueueEntry edgeSide(Index edge, std::uint8_t side, double key) { return {key, edge, side}; }
+    static QueueEntry pseudoSource(Index v, double d) { return {d, kNoIndex, v}; }
   };
 
   void reset();
   void seedSource(const ResolvedPoint& p, std::size_t number);
   void addInterval(Index edge, const Interval& w, const Fig6Branch* branch);
-  Interval* queuedInterval(const QueueEntry& entry);
+  void propagateEdgeSide(const QueueEntry& entry, double upTo);
+  void queuePending(Index edge, const Interval& w);
   void prefetchAhead() const;
   void updateVertex(Index v, double d);
   void createPseudoSourceWindows(Index v, double sigma, std::int32_t origin, int depth = 0,
@@ -138,7 +130,8 @@ class GeodesicSolver {
     const std::uint64_t f = mesh_.numFaces() + 1;
     return 20 * f * f;
   }
-  void propagate(Index edge, const Interval& w);
+  /// One window of `edge` across face f (the one across from its source), fr: f on `edge`.
+  void propagate(Index edge, const Interval& w, Index f, const FaceFrame& fr);
   void finish(const SolveOptions& options, double radius);
   /// Whether to build and send observer events. GEODEX_NO_OBSERVER_HOOKS compiles the hooks out
   /// (only for bench/hooks_overhead, which measures what the null check costs a release solve).
@@ -164,6 +157,10 @@ class GeodesicSolver {
   std::vector<ResolvedPoint> sources_;
   BucketQueue<QueueEntry> queue_;
   double queueBucketWidth_ = 1.0;
+  double batchSlack_ = 1.0;  // kBatchSlackEdges in mesh units
+  /// Per edge side (2 × edge + Interval::side): no pending window there has a smallest distance
+  /// below it (+inf: none pending); the key of its newest queue entry.
+  std::vector<double> pendingKey_;
   EdgeUpdateReport report_;
   std::vector<Interval> scratch_, before_;
   DegeneracyCounters counters_;
