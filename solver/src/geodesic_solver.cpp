@@ -336,7 +336,12 @@ void GeodesicSolver::propagateEdgeSide(const QueueEntry& entry, double upTo) {
   double& pendingKey = pendingKey_[2 * std::size_t{edge} + side];
   if (entry.key != pendingKey) return;
   const Index f = mesh_.edge(edge).face[1 - side];
-  if (f == kNoIndex) return;  // (a boundary side's windows are made propagated)
+  if (f == kNoIndex) {  // a boundary: nothing to cross (Algorithm 2 may have re-opened a window)
+    for (Interval& w : edges_[edge].intervals())
+      if (w.side == side) w.markPropagated();
+    pendingKey = kInfinity;
+    return;
+  }
   const FaceFrame& fr = mesh_.frame(f, edge);
   // The children go to the face's other two edges: their lists are wanted soon.
   __builtin_prefetch(&edges_[fr.edgeToV0]);

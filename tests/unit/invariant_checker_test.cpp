@@ -228,6 +228,45 @@ TEST(InvariantChecker, EndOfRunCoverageAndVertexAgreementFail) {
   }
 }
 
+// A window left pending where there is a face to cross means the wavefront stopped early (the
+// solver queues edge sides, not windows); one pending towards the outside of a boundary edge has
+// nothing to cross and is no violation.
+TEST(InvariantChecker, AWindowLeftPendingWithAFaceToCrossFailsAtTheEnd) {
+  const Mesh mesh(gridMesh(4, 4, 1.0, 1.0));
+  GeodesicSolver solver(mesh);
+  solver.solve(std::vector<SurfacePoint>{SurfacePoint::atVertex(0)});
+  const std::vector<double> d(solver.vertexDistances().begin(), solver.vertexDistances().end());
+  auto withOnePending = [&](bool boundary) {
+    std::vector<EdgeIntervals> edges(solver.edgeIntervals().begin(), solver.edgeIntervals().end());
+    for (Index e = 0; e < mesh.numEdges(); ++e) {
+      std::vector<Interval> list(edges[e].intervals().begin(), edges[e].intervals().end());
+      for (Interval& w : list) {
+        if ((mesh.edge(e).face[1 - w.side] == kNoIndex) != boundary) continue;
+        w.markPending();
+        edges[e].assign(list);
+        return edges;
+      }
+    }
+    ADD_FAILURE() << "no interval to re-open";
+    return edges;
+  };
+  {
+    InvariantChecker checker(CheckLevel::Full, true);
+    try {
+      checker.checkFinal(mesh, withOnePending(false), d, solver.sources(), true);
+      ADD_FAILURE() << "a window never propagated went unnoticed";
+    } catch (const InvariantViolation& v) {
+      EXPECT_EQ(v.invariant(), "wavefront-exhausted");
+    }
+  }
+  {
+    InvariantChecker checker(CheckLevel::Full, true);
+    EXPECT_NO_THROW(checker.checkFinal(mesh, withOnePending(true), d, solver.sources(), true));
+    // A solve stopped early may leave windows pending.
+    EXPECT_NO_THROW(checker.checkFinal(mesh, withOnePending(false), d, solver.sources(), false));
+  }
+}
+
 TEST(InvariantChecker, ReproducerNamesTheInvariant) {
   Update u;
   u.before = {make(0, kL, Vec2(5, 3), 1.0)};

@@ -15,7 +15,7 @@ namespace {
 const char* const kNames[] = {"sorted",          "in-range",          "no-overlap",
                               "no-tiny-gap",     "no-tiny-interval",  "finite-non-negative",
                               "real-source",     "continuous-at-eq1", "pointwise-min",
-                              "full-coverage",   "vertex-agreement"};
+                              "full-coverage",   "vertex-agreement",  "wavefront-exhausted"};
 
 std::string describe(const Interval& w) {
   std::ostringstream os;
@@ -455,6 +455,7 @@ void InvariantChecker::checkFinal(const Mesh& mesh, std::span<const EdgeInterval
          << list.size() << " intervals";
       record(FullCoverage, covered, 0.0, os.str(), nullptr);
     }
+    if (ranToEnd) checkExhausted(mesh, e, list);
     for (int k = 0; k < 2; ++k) {
       const Index v = E.vertex[k];
       if (!std::isfinite(d[v]) || list.empty()) continue;
@@ -470,6 +471,23 @@ void InvariantChecker::checkFinal(const Mesh& mesh, std::span<const EdgeInterval
       record(VertexAgreement, err <= allowed, err, os.str(), nullptr);
     }
   }
+}
+
+// A solve that ran to the end has crossed every face with every window that can cross it: no
+// interval with a face on the side it propagates into is still pending. (The solver's queue holds
+// edge sides, not windows; this looks at the windows themselves.)
+void InvariantChecker::checkExhausted(const Mesh& mesh, Index e, std::span<const Interval> list) {
+  const Edge& E = mesh.edge(e);
+  for (const Interval& w : list) {
+    if (!w.pending() || E.face[1 - w.side] == kNoIndex) continue;
+    std::ostringstream os;
+    os << std::setprecision(17) << "edge " << e << " (" << E.vertex[0] << "-" << E.vertex[1]
+       << "): " << describe(w) << " is still pending at the end of the solve; face "
+       << E.face[1 - w.side] << " was never crossed from it";
+    record(WavefrontExhausted, false, 0.0, os.str(), nullptr);
+    return;
+  }
+  record(WavefrontExhausted, true, 0.0, "", nullptr);
 }
 
 void writeReproducer(const InvariantViolation& v, const std::string& path) {

@@ -14,8 +14,9 @@
 //     of the list before and the incoming interval, sampled along the edge (except inside the
 //     tiny intervals step 3 removed, where a neighbour's values stand in by the paper's
 //     contract, and within the slack step 4 may sew); and at the end,
-//     every edge reached is fully covered and every vertex's distance is the same from all its
-//     edges (the final field is continuous).
+//     every edge reached is fully covered, every vertex's distance is the same from all its
+//     edges (the final field is continuous), and no window that has a face to cross is still
+//     pending (the wavefront was exhausted).
 // A violation throws InvariantViolation, which carries everything needed to replay it.
 
 #include <memory>
@@ -82,7 +83,8 @@ class InvariantChecker : public SolverObserver {
 
  private:
   enum Id { Sorted, InRange, NoOverlap, NoTinyGap, NoTinyInterval, FiniteNonNegative, RealSource,
-            ContinuousAtEq1, PointwiseMin, FullCoverage, VertexAgreement, kNumInvariants };
+            ContinuousAtEq1, PointwiseMin, FullCoverage, VertexAgreement, WavefrontExhausted,
+            kNumInvariants };
   void record(Id id, bool ok, double error, const std::string& why, const EdgeUpdateEvent* e);
 
   // The checks of one edge update, in the order onEdgeUpdate makes them; [lo, hi) is the part of
@@ -91,6 +93,7 @@ class InvariantChecker : public SolverObserver {
   static ChangedRange changedRange(const EdgeUpdateEvent& e);
   void checkWellFormed(const EdgeUpdateEvent& e, std::size_t lo, std::size_t hi);
   void checkContinuityAtEq1(const EdgeUpdateEvent& e, std::size_t lo, std::size_t hi);
+  void checkExhausted(const Mesh& mesh, Index e, std::span<const Interval> list);
   void checkPointwiseMin(const EdgeUpdateEvent& e, const ChangedRange& changed, std::size_t lo,
                          std::size_t hi);
   std::span<const double> pointwiseMinSamples(const EdgeUpdateEvent& e, const ChangedRange& changed,
