@@ -347,7 +347,7 @@ std::uint64_t mortonCode(std::uint32_t x, std::uint32_t y, std::uint32_t z) {
 
 // Edges numbered along a Z-order curve through their midpoints: the wavefront sweeps space, and
 // with this order the interval lists, edge records and frames it touches at one time lie close
-// together in memory, so the first read of a popped interval's list seldom waits on memory. Edge
+// together in memory, so the first read of a popped edge's list seldom waits on memory. Edge
 // numbers are internal: callers name edges by their vertices.
 void Mesh::sortEdgesAlongSpace() {
   if (edges_.empty()) return;
