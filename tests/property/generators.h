@@ -892,18 +892,7 @@ enum class MeshFamily : std::uint8_t {
   FarSourcePatch,    // a bumpy patch and a vertex 1e4–1e7 away
 };
 
-/// A bumpy 12×12-style patch whose y = 0 side is joined by long thin triangles to a vertex `far`
-/// away (the last vertex): the configuration of tests/unit's D4 input, at size n.
-inline TriangleSoup farSourceBumpyPatch(int n, double far, std::uint64_t seed) {
-  verify::SplitMix64 rng(seed);
-  TriangleSoup s = verify::heightFieldMesh(n, n, n, n, [](double, double) { return 0.0; });
-  for (Vec3& p : s.positions)
-    if (p.x() > 0 && p.x() < n && p.y() > 0 && p.y() < n) p.z() = rng.uniform(-0.3, 0.3);
-  const Index apex = static_cast<Index>(s.positions.size());
-  s.positions.push_back(Vec3(n / 2.0, -far, 0.0));
-  for (int i = 0; i < n; ++i) s.faces.push_back({apex, Index(i + 1), Index(i)});
-  return s;
-}
+using verify::farSourceBumpyPatch;
 
 /// A small mesh of the given family (a few dozen to ~150 vertices: whole solves with the full
 /// invariant checker stay fast).
@@ -993,17 +982,10 @@ inline rc::Gen<MeshCase> meshCase(MeshFamily family) {
         const int nx = *rc::gen::inRange(2, 9), ny = *rc::gen::inRange(2, 9);
         const auto seed = *uniformInt<std::uint64_t>(0, 1000);
         const double amplitude = *rc::gen::element(0.05, 0.3, 1.0);
-        verify::SplitMix64 rng(seed);
-        std::vector<double> z((nx + 1) * (ny + 1));
-        for (double& v : z) v = rng.uniform(-amplitude, amplitude);
-        m.soup = verify::heightFieldMesh(nx, ny, nx, ny, [&](double x, double y) {
-          return z[static_cast<std::size_t>(std::lround(y) * (nx + 1) + std::lround(x))];
-        });
+        m.soup = verify::bumpyHeightField(nx, ny, amplitude, seed);
         m.family = "bumpy-height-field";
-        m.recipe = str("heightFieldMesh(", std::to_string(nx), ", ", std::to_string(ny), ", ",
-                       std::to_string(nx), ", ", std::to_string(ny),
-                       ", z) with z(i, j) = SplitMix64(", std::to_string(seed), ").uniform(",
-                       num(-amplitude), ", ", num(amplitude), ") in row-major vertex order");
+        m.recipe = str("bumpyHeightField(", std::to_string(nx), ", ", std::to_string(ny), ", ",
+                       num(amplitude), ", ", std::to_string(seed), ")");
         break;
       }
       case MeshFamily::FarSourcePatch: {

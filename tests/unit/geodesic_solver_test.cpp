@@ -180,17 +180,7 @@ TEST(Bounds, IcosphereBetweenEuclideanAndEdgeGraph) {
 // A bumpy 12×12 patch whose y = 0 side is joined by long thin triangles to a vertex `far` away:
 // windows straight from that vertex (σ = 0, source far) meet pseudo-sources of the patch
 // (σ ≈ far, source near), the configuration where Eq. 1's quadratic loses its digits (D4).
-TriangleSoup farSourceBumpyPatch(double far) {
-  verify::SplitMix64 rng(5);
-  const int n = 12;
-  TriangleSoup s = verify::heightFieldMesh(n, n, n, n, [](double, double) { return 0.0; });
-  for (Vec3& p : s.positions)
-    if (p.x() > 0 && p.x() < n && p.y() > 0 && p.y() < n) p.z() = rng.uniform(-0.3, 0.3);
-  const Index apex = static_cast<Index>(s.positions.size());
-  s.positions.push_back(Vec3(n / 2.0, -far, 0.0));
-  for (int i = 0; i < n; ++i) s.faces.push_back({apex, Index(i + 1), Index(i)});
-  return s;
-}
+TriangleSoup farSourceBumpyPatch(double far) { return verify::farSourceBumpyPatch(12, far, 5); }
 
 TEST(DegeneracyCounters, EveryCaseIsReachedByTheTestInputs) {
   DegeneracyCounters total;

@@ -284,6 +284,33 @@ TEST(MeshGenerators, QuantizedHeightFieldHasTerracesAndFlatVertices) {
   for (const Vec3& p : quantizedHeightField(5, 5, 1, 1).positions) EXPECT_EQ(p.z(), 0.0);
 }
 
+TEST(MeshGenerators, BumpyHeightFieldDrawsEveryHeightFromItsSeed) {
+  const TriangleSoup soup = bumpyHeightField(5, 4, 0.3, 11);
+  EXPECT_EQ(soup.positions.size(), 6u * 5u);
+  EXPECT_EQ(soup.faces.size(), 40u);
+  expectWellFormed(soup);
+  SplitMix64 rng(11);  // row by row, one draw per vertex
+  for (const Vec3& p : soup.positions) {
+    EXPECT_EQ(p.x(), std::round(p.x()));
+    EXPECT_EQ(p.z(), rng.uniform(-0.3, 0.3));
+  }
+  EXPECT_NE(bumpyHeightField(5, 4, 0.3, 12).positions, soup.positions);
+}
+
+TEST(MeshGenerators, FarSourcePatchJoinsOneFarVertexToTheFirstRow) {
+  const int n = 4;
+  const TriangleSoup soup = farSourceBumpyPatch(n, 1e6, 3);
+  EXPECT_EQ(soup.positions.size(), static_cast<std::size_t>((n + 1) * (n + 1) + 1));
+  EXPECT_EQ(soup.faces.size(), static_cast<std::size_t>(2 * n * n + n));
+  expectWellFormed(soup);
+  EXPECT_EQ(soup.positions.back(), Vec3(n / 2.0, -1e6, 0.0));
+  for (const Vec3& p : soup.positions) {
+    const bool onBoundary = p.x() == 0 || p.x() == n || p.y() == 0 || p.y() == n;
+    if (onBoundary || p.y() < 0) EXPECT_EQ(p.z(), 0.0);
+    EXPECT_LE(std::abs(p.z()), 0.3);
+  }
+}
+
 // === Spheres ===================================================================================
 
 TEST(MeshGenerators, Icosphere) {

@@ -190,6 +190,27 @@ TriangleSoup quantizedHeightField(int nx, int ny, std::uint64_t seed, int levels
   return maskedGrid(nx, ny, nx, ny, DiagonalPattern::AllOneWay, keepAll(), heightAt);
 }
 
+TriangleSoup bumpyHeightField(int nx, int ny, double amplitude, std::uint64_t seed) {
+  require(amplitude >= 0.0 && std::isfinite(amplitude), "bumpyHeightField: amplitude must be finite and >= 0");
+  SplitMix64 rng(seed);
+  std::vector<double> z(static_cast<std::size_t>(nx + 1) * static_cast<std::size_t>(ny + 1));
+  for (double& v : z) v = rng.uniform(-amplitude, amplitude);
+  return maskedGrid(nx, ny, nx, ny, DiagonalPattern::AllOneWay, keepAll(),
+                    [&z, nx](int i, int j, double, double) { return z[static_cast<std::size_t>(j * (nx + 1) + i)]; });
+}
+
+TriangleSoup farSourceBumpyPatch(int n, double far, std::uint64_t seed) {
+  require(far > 0.0 && std::isfinite(far), "farSourceBumpyPatch: far must be finite and > 0");
+  SplitMix64 rng(seed);
+  TriangleSoup s = gridMesh(n, n, n, n);
+  for (Vec3& p : s.positions)
+    if (p.x() > 0 && p.x() < n && p.y() > 0 && p.y() < n) p.z() = rng.uniform(-0.3, 0.3);
+  const Index apex = static_cast<Index>(s.positions.size());
+  s.positions.push_back(Vec3(n / 2.0, -far, 0.0));
+  for (int i = 0; i < n; ++i) s.faces.push_back({apex, Index(i + 1), Index(i)});
+  return s;
+}
+
 // === Spheres ===================================================================================
 
 TriangleSoup icosphereMesh(int subdivisions, double radius) {

@@ -86,6 +86,23 @@ TriangleSoup heightFieldMesh(int nx, int ny, double width, double height,
 /// @return (nx+1)(ny+1) vertices, 2·nx·ny faces
 TriangleSoup quantizedHeightField(int nx, int ny, std::uint64_t seed, int levels);
 
+/// A height field on the integer grid, vertex (i, j) at (i, j, z) with z drawn uniformly from
+/// [−amplitude, amplitude] by SplitMix64(seed), row by row: saddles, cones and nearly flat
+/// vertices side by side, none of them on purpose.
+/// @param[in] nx, ny     cells along x and y, ≥ 1
+/// @param[in] amplitude  ≥ 0
+/// @return (nx+1)(ny+1) vertices, 2·nx·ny faces
+TriangleSoup bumpyHeightField(int nx, int ny, double amplitude, std::uint64_t seed);
+
+/// gridMesh(n, n, n, n) with each interior vertex lifted by a uniform draw from [−0.3, 0.3]
+/// (SplitMix64(seed), row by row), whose y = 0 side is joined by n long thin triangles to one vertex (the last) at (n/2, −far, 0):
+/// windows from that far vertex reach the patch with σ ≈ far, where Eq. 1's coefficients cancel
+/// (D4, tests/unit's far-source test).
+/// @param[in] n    cells per side, ≥ 1
+/// @param[in] far  > 0, e.g. 1e4–1e7 × n
+/// @return (n+1)² + 1 vertices, 2n² + n faces
+TriangleSoup farSourceBumpyPatch(int n, double far, std::uint64_t seed);
+
 /// An icosahedron with each face split into 4 `subdivisions` times, vertices projected onto the
 /// sphere of the given radius centred at the origin.
 /// @return 10·4^s + 2 vertices, 20·4^s faces
