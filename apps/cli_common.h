@@ -14,7 +14,7 @@ namespace geodex::cli {
 /// The tool's exit codes (documented in README.md and `geodex --help`).
 enum ExitCode : int {
   kExitOk = 0,
-  kExitCheckFailed = 1,  ///< a check found a problem (reserved for the `check` subcommand)
+  kExitCheckFailed = 1,  ///< a check found a problem (`check`), or `crosscheck` found the program wrong
   kExitBadInput = 2,     ///< bad input or usage; "error: …" on stderr
   kExitInternal = 3,     ///< a bug in geodex (an internal check failed); "internal error: …"
 };

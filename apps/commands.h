@@ -21,5 +21,6 @@ Command addInfoCommand(CLI::App& app);
 Command addCheckCommand(CLI::App& app);
 Command addReproCommand(CLI::App& app);
 Command addRenderCommand(CLI::App& app);
+Command addCrossCheckCommand(CLI::App& app);
 
 }  // namespace geodex::cli

@@ -2,7 +2,7 @@
 //
 // Exit codes (also in README.md and `geodex --help`):
 //   0  success
-//   1  a check found a problem (reserved for the `check` subcommand)
+//   1  a check found a problem (`check`), or `crosscheck` found the other program wrong
 //   2  bad input or usage: "error: …" on stderr (the message names file, line and element)
 //   3  internal error: an invariant inside geodex failed — a bug, please report it with the
 //      command line and the mesh; "internal error: …" on stderr
@@ -31,7 +31,7 @@ constexpr const char* kFooter = R"(SPEC (a point on the surface):
   f:F,A,B,C    the point of face F with barycentric coordinates A,B,C (sum 1)
 Vertex and face indices are 0-based, in file order.
 
-Exit codes: 0 success, 1 a check failed, 2 bad input or usage (error: on stderr),
+Exit codes: 0 success, 1 a check failed (check, crosscheck), 2 bad input or usage (error: on stderr),
 3 internal error (a bug in geodex: please report it).)";
 
 /// The subcommand to suggest `--help` for: the one the parser got to, if any.
@@ -49,7 +49,7 @@ int runMain(int argc, char** argv) {
 
   const std::vector<Command> commands{addDistanceCommand(app), addPathCommand(app),
                                       addInfoCommand(app), addCheckCommand(app), addReproCommand(app),
-                                      addRenderCommand(app)};
+                                      addRenderCommand(app), addCrossCheckCommand(app)};
 
   try {
     app.parse(argc, argv);
