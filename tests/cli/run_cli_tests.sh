@@ -28,21 +28,9 @@ run() {
   LAST_CMD="geodex $*"
 }
 
-fail() {
-  echo "FAIL [$CASE]: $*" >&2
-  echo "  command: ${LAST_CMD:-}" >&2
-  echo "  exit code: ${RC:-}" >&2
-  echo "  --- stdout (first 40 lines) ---" >&2
-  head -n 40 "$OUT" >&2 || true
-  echo "  --- stderr (first 40 lines) ---" >&2
-  head -n 40 "$ERR" >&2 || true
-  exit 1
-}
+# fail, expect_rc, expect_err, expect_out, run_named_case
+source "$(dirname "$0")/case_helpers.sh"
 
-expect_rc() { [[ $RC -eq $1 ]] || fail "expected exit code $1"; }
-# A crash (signal) shows as 128+N; bad input must never get there.
-expect_err() { grep -Eq -- "$1" "$ERR" || fail "stderr should match /$1/"; }
-expect_out() { grep -Eq -- "$1" "$OUT" || fail "stdout should match /$1/"; }
 expect_usage_error() {
   expect_rc 2
   expect_err '^error: '
@@ -364,15 +352,4 @@ case_check_grid_source_on_an_edge_line_through_a_flat_vertex() {
   expect_out '^check passed$'
 }
 
-ALL_CASES=$(declare -F | awk '{print $3}' | sed -n 's/^case_//p')
-
-if [[ $CASE == all ]]; then
-  failed=0
-  for c in $ALL_CASES; do
-    if (CASE=$c; "case_$c"); then echo "pass: $c"; else failed=$((failed + 1)); fi
-  done
-  echo "$(( $(wc -w <<<"$ALL_CASES") - failed )) passed, $failed failed"
-  exit $((failed > 0))
-fi
-declare -F "case_$CASE" >/dev/null || { echo "unknown case '$CASE'; cases: $ALL_CASES" >&2; exit 2; }
-"case_$CASE"
+run_named_case "$CASE"
