@@ -7,6 +7,7 @@
 // (verify/face_minimizer.h) and writes it to DIR/NNN-<kind>/ (crosscheck_report.h).
 // Summary on stdout, progress on stderr; exit 0 no finding, 1 findings, 2 bad usage.
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -26,6 +27,7 @@
 #include "crosscheck_report.h"
 #include "crosscheck_trial.h"
 #include "geodex/error.h"
+#include "geodex/mesh_io.h"
 #include "geodex/verify/face_minimizer.h"
 
 namespace geodex::cli {
@@ -171,15 +173,29 @@ std::vector<bool> geodesicBall(const Trial& t) {
   return keep;
 }
 
-/// Removes faces from a finding's case while the same kind of finding persists; the trial of
-/// the smallest case (the first one when nothing could go or the program is not repeatable).
+/// The kinds of validateMesh's warnings a soup gets (non-manifold-vertex, components, …).
+std::set<std::string> warningKinds(const TriangleSoup& soup) {
+  std::vector<MeshIssue> issues;
+  validateMesh(soup, issues);
+  std::set<std::string> kinds;
+  for (const MeshIssue& issue : issues) kinds.insert(issue.kind);
+  return kinds;
+}
+
+/// Removes faces from a finding's case while the same kind of finding persists, and without a
+/// kind of mesh defect the case did not have: removing faces easily pinches a vertex or splits
+/// a part off, and a reproducer of that would be another bug than the one found. Returns the
+/// trial of the smallest case (the first one when nothing could go or the program is not
+/// repeatable).
 Trial minimize(const Trial& first, const CaseRunner& runner, double minimizeSeconds, FindingOrigin& origin) {
   const verify::FindingKind kind = *first.kind;
   verify::CrossCheckCase candidate = first.c;
   // Without some faces a convex domain may be convex no more: the visibility-graph oracle holds
   // for every planar domain.
   if (candidate.planar == verify::PlanarOracle::Convex) candidate.planar = verify::PlanarOracle::Domain;
+  const std::set<std::string> defects = warningKinds(first.c.soup);
   const auto stillFails = [&](const TriangleSoup& soup, Index source) {
+    if (!std::ranges::includes(defects, warningKinds(soup))) return false;
     candidate.soup = soup;
     candidate.source = source;
     return runner.run(candidate).kind == kind;
@@ -347,6 +363,9 @@ Command addCrossCheckCommand(CLI::App& app) {
                                                       "(default 60)")
       ->type_name("SEC");
   sub->add_flag("--quiet,-q", o->quiet, "No progress on stderr (one line per case)");
+  sub->footer("Findings: DIR/NNN-<kind>/ (mesh.off, source.txt, expected.txt, got.txt, report.txt, picture.png, "
+              "original.off); kinds: wrong-distance, reachability, line-count, bad-value, crash, timeout.\n"
+              "Exit codes: 0 no finding, 1 findings, 2 bad usage. docs/crosscheck.md has more.");
   return {sub, [o] { return runCrossCheck(*o); }};
 }
 
