@@ -75,7 +75,7 @@ std::string reportText(const Trial& t, const FindingOrigin& origin, const CaseRu
     << "made by: " << t.c.recipe << "\n"
     << "minimized: " << origin.originalFaces << " faces, " << origin.originalVertices << " vertices -> "
     << t.c.soup.faces.size() << " faces, " << t.c.soup.positions.size() << " vertices in " << origin.trials
-    << " trials (the same kind of finding at every step)"
+    << " trials (the same kind of finding at every step, no kind of mesh defect the case did not have)"
     << (origin.stoppedBy.empty() ? "" : "; stopped early by the " + origin.stoppedBy + " budget") << "\n"
     << "source: vertex " << t.c.source << " (0-based; source.txt)\n"
     << "before minimizing: original.off, source vertex " << origin.originalSource << "\n"
@@ -103,8 +103,9 @@ std::string reportText(const Trial& t, const FindingOrigin& origin, const CaseRu
     << "\n"
     << "picture.png: " << (t.judgement.error.empty()
                                 ? "geodex's distances (no distances to compare), the source as a white disc"
-                                : "|got − expected| per vertex (viridis, 0 dark blue to the largest yellow; grey where "
-                                  "one side says unreachable), the source a white disc, the worst vertex a red disc")
+                                : "|got − expected| per vertex where beyond the tolerance (viridis, 0 dark blue to the "
+                                  "largest yellow; grey where one side says unreachable), the source a white disc, the "
+                                  "worst vertex a red disc")
     << "\n";
   return r.str();
 }
@@ -122,8 +123,12 @@ void writePicture(const std::string& path, const Trial& t) {
   render::RenderMarks marks;
   marks.sources = sources;
   std::span<const double> field = t.reference.distances;
+  std::vector<double> beyondTolerance;
   if (!t.judgement.error.empty()) {
-    field = t.judgement.error;
+    // Errors within the tolerance are drawn as none: scaled to the largest of them, rounding
+    // noise would fill the colour range when the finding is only an unreachable vertex.
+    for (double e : t.judgement.error) beyondTolerance.push_back(e > t.judgement.allowed ? e : 0.0);
+    field = beyondTolerance;
     settings.isolineCount = 0;  // isolines of an error field would only add noise
     if (!t.judgement.worst.empty()) marks.target = mesh.position(t.judgement.worst.front().vertex);
   }

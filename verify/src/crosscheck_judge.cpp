@@ -223,7 +223,7 @@ Judgement judgeDistances(const CrossCheckCase& c, const Reference& reference, co
   // Relative to the largest distance; a mesh where every distance is 0 (the source alone) is
   // held to its size instead.
   const double scale = j.largestDistance > 0.0 ? j.largestDistance : Mesh(c.soup).boundingBoxDiagonal();
-  const double allowed = tolerance * scale;
+  const double allowed = j.allowed = tolerance * scale;
   const auto [swapped, off] = compare(expected, got.values, allowed, j);
   const bool oraclesOk = runOracles(c, got.values, tolerance, j.oracles);
   if (swapped > 0) {

@@ -78,6 +78,7 @@ struct Judgement {
   std::optional<FindingKind> kind;  ///< none: the program agrees
   std::string what;                 ///< one line saying what is wrong
   double largestDistance = 0.0;     ///< the scale of the tolerance: geodex's largest finite distance
+  double allowed = 0.0;             ///< the error allowed: tolerance × that scale
   std::vector<VertexError> worst;   ///< up to kWorstVertices, worst first
   /// #V: |got − expected| per vertex, +inf where reachability differs (empty when the output had
   /// the wrong length or a bad line)
