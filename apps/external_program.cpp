@@ -49,6 +49,28 @@ std::string formatSeconds(double s) {
   ::_exit(127);
 }
 
+/// The process group of the command running now (0: none), for the signal handler below.
+volatile std::sig_atomic_t runningGroup = 0;
+
+/// On SIGINT, SIGTERM or SIGHUP (Ctrl-C, a CI job cancelled) the command's process group, which
+/// is not in ours and so did not get the signal, is killed before we end as the signal says.
+extern "C" void killRunningGroupAndEnd(int signalNumber) {
+  if (runningGroup != 0) ::kill(-static_cast<pid_t>(runningGroup), SIGKILL);
+  ::signal(signalNumber, SIG_DFL);
+  ::raise(signalNumber);
+}
+
+void installSignalHandlersOnce() {
+  static const bool installed = [] {
+    struct sigaction action {};
+    action.sa_handler = killRunningGroupAndEnd;
+    sigemptyset(&action.sa_mask);
+    for (int signalNumber : {SIGINT, SIGTERM, SIGHUP}) ::sigaction(signalNumber, &action, nullptr);
+    return true;
+  }();
+  (void)installed;
+}
+
 /// Whether the child has ended, without reaping it: its pid (and so its process-group id) stays
 /// taken until we reap, so killing the group afterwards cannot hit an unrelated process.
 bool hasEnded(pid_t pid) {
@@ -117,6 +139,8 @@ ProgramRun runProgram(const std::string& command, double timeLimitSeconds, const
   if (pid == 0) execShell(command, captureFd);
   ::close(captureFd);
   ::setpgid(pid, pid);  // also here, so the group exists before we may need to kill it
+  installSignalHandlersOnce();
+  runningGroup = static_cast<std::sig_atomic_t>(pid);
 
   ProgramRun run;
   const auto deadline = start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(timeLimitSeconds));
@@ -135,6 +159,7 @@ ProgramRun runProgram(const std::string& command, double timeLimitSeconds, const
   int status = 0;
   while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
   }
+  runningGroup = 0;
   run.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   if (!run.timedOut) {
     if (WIFEXITED(status)) run.exitStatus = WEXITSTATUS(status);

@@ -49,6 +49,8 @@ expect_findings_only_of() {
 }
 
 DIJKSTRA="python3 $HERE/edge_dijkstra.py {mesh} {source} {out}"
+# hang.py's child carries this marker, so that a test sees its own children only.
+export HANG_MARKER=geodex-crosscheck-hang-child-$$
 
 # ===  cases =====================================================================================
 
@@ -108,7 +110,24 @@ case_hang_reported_as_timeout_without_stalling() {
   grep -q 'process group was killed' "$(findings_of timeout | head -n 1)/report.txt" || fail "report says no kill"
   grep -q 'hang.py: thinking' "$(findings_of timeout | head -n 1)/report.txt" || fail "output not kept"
   sleep 0.2
-  if pgrep -f geodex-crosscheck-hang-child >/dev/null; then fail "hang.py's child outlived its case"; fi
+  if pgrep -f "$HANG_MARKER" >/dev/null; then fail "hang.py's child outlived its case"; fi
+}
+
+# Interrupted (Ctrl-C, a cancelled CI job), crosscheck takes the program's process group with it.
+case_interrupt_kills_the_running_program() {
+  "$GEODEX" crosscheck --solver "python3 $HERE/hang.py {mesh} {source} {out}" --cases 2 --out "$FINDINGS" \
+    >"$OUT" 2>"$ERR" &
+  local pid=$!
+  sleep 1.5
+  kill -INT "$pid"
+  set +e
+  wait "$pid"
+  RC=$?
+  set -e
+  LAST_CMD="geodex crosscheck … (interrupted)"
+  expect_rc 130
+  sleep 0.2
+  if pgrep -f "$HANG_MARKER" >/dev/null; then fail "hang.py's child outlived the interrupt"; fi
 }
 
 case_short_output_reported_as_line_count() {
