@@ -592,6 +592,19 @@ TEST(Algorithm2, ShadowsLeftWhenTheWavefrontHasPassedAreClosedAtTheirMidpoints) 
   }
 }
 
+TEST(Algorithm2, NeighboursThatAlreadyMeetLeaveNoShadowToClose) {
+  // A shadow is a gap: of three neighbours that meet and a fourth 1e-9 beyond, once the wavefront
+  // has passed, only that gap is closed (and counted), and the meeting points stay where they are.
+  EdgeIntervals list;
+  list.assign({make(0.0, 3.0, Vec2(2.0, 1.0), 0.0), make(3.0, 6.0, Vec2(5.0, 1.0), 0.0),
+               make(6.0, 8.0, Vec2(7.0, 1.0), 0.0), make(8.0 + 1e-9, kL, Vec2(9.0, 1.0), 0.0)});
+  EXPECT_EQ(list.closeShadows(1e-8, 100.0), 1u);
+  const auto w = list.intervals();
+  EXPECT_EQ(w[0].b1, 3.0);
+  EXPECT_EQ(w[1].b1, 6.0);
+  EXPECT_EQ(w[2].b1, w[3].b0);
+}
+
 TEST(Eq1, CandidatesIncludeTheBisector) {
   const Interval a = make(0.0, kL, Vec2(2.0, 1.0), 0.0);
   const Interval b = make(0.0, kL, Vec2(8.0, 1.0), 0.0);
