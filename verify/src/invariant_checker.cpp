@@ -53,6 +53,11 @@ double sourceDistance(const Interval& w, double x) {
 }
 
 // The same interval: everything the invariants read, and the propagation state.
+// The same distance function: distanceAt gives the same value at every x, to the bit.
+bool sameFunction(const Interval& a, const Interval& b) {
+  return a.source == b.source && a.sigma == b.sigma;
+}
+
 bool sameInterval(const Interval& a, const Interval& b) {
   return a.b0 == b.b0 && a.b1 == b.b1 && a.source == b.source && a.sigma == b.sigma &&
          a.origin == b.origin && a.side == b.side && a.pending() == b.pending();
@@ -254,6 +259,15 @@ double sewingSlack(const EdgeUpdateEvent& e, std::span<const Interval> beforeNea
   return std::max({tiny, tinyLength(e.incoming, e.edgeLength), sewLength(e.incoming, e.edgeLength)});
 }
 
+// Sorts v made of three sorted runs, [0, a), [a, b) and [b, size) — the last the two ends of
+// the incoming interval — through scratch, without allocating once the vectors have grown.
+void mergeRuns(std::vector<double>& v, std::ptrdiff_t a, std::ptrdiff_t b, std::vector<double>& scratch) {
+  scratch.resize(static_cast<std::size_t>(b));
+  std::merge(v.begin(), v.begin() + a, v.begin() + a, v.begin() + b, scratch.begin());
+  const double last[] = {v[b], v[b + 1]};
+  std::merge(scratch.begin(), scratch.end(), std::begin(last), std::end(last), v.begin());
+}
+
 }  // namespace
 
 // The samples of the pointwise-minimum check, sorted, so that one sweep over each list finds the
@@ -278,18 +292,36 @@ std::span<const double> InvariantChecker::pointwiseMinSamples(const EdgeUpdateEv
   std::vector<double>& xs = samples_;
   xs.clear();
   const int uniform = 32;
-  for (int k = 0; k <= uniform; ++k) {
+  // Only the k whose sample can fall in [from, to] are tried (each still tested as it is
+  // computed, so the samples are the same); a range that is not finite tries them all.
+  int kFirst = 0, kLast = uniform;
+  if (std::isfinite(from) && std::isfinite(to) && e.edgeLength > 0.0) {
+    kFirst = static_cast<int>(std::clamp(std::floor(from / e.edgeLength * uniform) - 1.0, 0.0, double(uniform)));
+    kLast = static_cast<int>(std::clamp(std::ceil(to / e.edgeLength * uniform) + 1.0, 0.0, double(uniform)));
+  }
+  for (int k = kFirst; k <= kLast; ++k) {
     const double x = e.edgeLength * k / uniform;
     if (x >= from && x <= to) xs.push_back(x);
   }
   // Inside every piece between consecutive endpoints of the three lists: a D2 overlap or a D1
   // sliver is far shorter than the uniform spacing, and which function wins there is what
   // steps 1–4 decide (otherwise an overlap handed to the longer side goes unseen).
+  // The endpoints of a well-formed list are already in order, so the two lists' are merged
+  // rather than sorted; a list that is not (a violation the cheap tier reports) is sorted.
   std::vector<double>& ends = ends_;
-  ends.assign({e.incoming.b0, e.incoming.b1});
+  ends.clear();
   for (const Interval& w : beforeNear) ends.insert(ends.end(), {w.b0, w.b1});
+  const auto afterStart = static_cast<std::ptrdiff_t>(ends.size());
   for (const Interval& w : afterNear) ends.insert(ends.end(), {w.b0, w.b1});
-  std::sort(ends.begin(), ends.end());
+  const auto incomingStart = static_cast<std::ptrdiff_t>(ends.size());
+  ends.insert(ends.end(), {e.incoming.b0, e.incoming.b1});
+  if (std::is_sorted(ends.begin(), ends.begin() + afterStart) &&
+      std::is_sorted(ends.begin() + afterStart, ends.begin() + incomingStart) &&
+      std::is_sorted(ends.begin() + incomingStart, ends.end())) {
+    mergeRuns(ends, afterStart, incomingStart, merged_);
+  } else {
+    std::sort(ends.begin(), ends.end());
+  }
   const std::size_t numUniform = xs.size();
   for (std::size_t i = 0; i + 1 < ends.size(); ++i)
     if (ends[i + 1] > ends[i]) xs.push_back(0.5 * (ends[i] + ends[i + 1]));
@@ -338,30 +370,57 @@ PointwiseMinError worstPointwiseMinError(const EdgeUpdateEvent& e, std::span<con
   for (double x : xs) {
     while (kBefore + 1 < numBefore && e.before[kBefore + 1].b0 <= x) ++kBefore;
     while (kAfter + 1 < numAfter && e.after[kAfter + 1].b0 <= x) ++kAfter;
+    // The old list is sorted: only intervals next to the one starting last before x can reach x,
+    // even with the sewing slack; only the interval starting last before x and its left
+    // neighbour can cover x in the new one (listDistance).
+    const std::ptrdiff_t beforeFirst = std::max<std::ptrdiff_t>(0, kBefore - 1);
+    const std::ptrdiff_t beforeLast = std::min<std::ptrdiff_t>(kBefore + 1, numBefore - 1);
+    const std::ptrdiff_t afterFirst = std::max<std::ptrdiff_t>(0, kAfter - 1);
+    const bool incomingNear = x >= e.incoming.b0 - tiny && x <= e.incoming.b1 + tiny;
+    // Where the incoming interval does not reach, the minimum is the old list, and where one
+    // interval of each list covers x with the same function (source and σ), the new list's
+    // value is the old one's to the bit: every error below is 0 there, so nothing is evaluated.
+    // (Most samples of an update are such: an old interval the incoming one cut shorter, away
+    // from the cut.)
+    if (!incomingNear) {
+      const Interval* oldOne = nullptr;
+      int oldCovering = 0, newCovering = 0;
+      for (std::ptrdiff_t i = beforeFirst; i <= beforeLast; ++i)
+        if (e.before[i].b0 <= x && x <= e.before[i].b1) ++oldCovering, oldOne = &e.before[i];
+      const Interval* newOne = nullptr;
+      for (std::ptrdiff_t i = afterFirst; i <= kAfter; ++i)
+        if (e.after[i].b0 <= x && x <= e.after[i].b1) ++newCovering, newOne = &e.after[i];
+      if (oldCovering == 1 && newCovering == 1 && sameFunction(*oldOne, *newOne)) continue;
+    }
     const double reach = removedSliverReach(x);
     // strict: the minimum of the functions where they really are; loose: the minimum with the
     // slack step 4 may sew; candidates: every value the repaired list may take at x (a sewn end
     // is one function's value carried across the gap).
-    // (Each function is evaluated once per sample: strict and loose share the value.)
-    double loose = valueWithSlack(e.incoming, x);
+    // (Each function is evaluated once per sample: strict and loose share the value, and an
+    // interval of the new list that is an old one's or the incoming one's function, cut to
+    // another range, takes the value already computed.)
+    double loose = incomingNear ? e.incoming.distanceAt(x) : INFINITY;
     double strict = e.incoming.b0 <= x && x <= e.incoming.b1 ? loose : INFINITY;
     std::array<double, 5> candidates{};
+    std::array<const Interval*, 5> candidateOf{};
     std::size_t numCandidates = 0;
-    if (std::isfinite(loose)) candidates[numCandidates++] = loose;
-    // The old list is sorted: only intervals next to the one starting last before x can reach x,
-    // even with the sewing slack.
-    for (std::ptrdiff_t i = std::max<std::ptrdiff_t>(0, kBefore - 1);
-         i <= std::min<std::ptrdiff_t>(kBefore + 1, numBefore - 1); ++i) {
+    if (std::isfinite(loose)) candidateOf[numCandidates] = &e.incoming, candidates[numCandidates++] = loose;
+    for (std::ptrdiff_t i = beforeFirst; i <= beforeLast; ++i) {
       const Interval& w = e.before[i];
       const double v = valueWithSlack(w, x);
       if (w.b0 <= x && x <= w.b1) strict = std::min(strict, v);
-      if (std::isfinite(v)) candidates[numCandidates++] = v;
+      if (std::isfinite(v)) candidateOf[numCandidates] = &w, candidates[numCandidates++] = v;
       loose = std::min(loose, v);
     }
-    // Only the interval starting last before x and its left neighbour can cover x (listDistance).
     double got = INFINITY;
-    for (std::ptrdiff_t i = std::max<std::ptrdiff_t>(0, kAfter - 1); i <= kAfter; ++i)
-      if (x >= e.after[i].b0 && x <= e.after[i].b1) got = std::min(got, e.after[i].distanceAt(x));
+    for (std::ptrdiff_t i = afterFirst; i <= kAfter; ++i) {
+      const Interval& w = e.after[i];
+      if (!(x >= w.b0 && x <= w.b1)) continue;
+      double v = NAN;
+      for (std::size_t c = 0; c < numCandidates && std::isnan(v); ++c)
+        if (sameFunction(*candidateOf[c], w)) v = candidates[c];
+      got = std::min(got, std::isnan(v) ? w.distanceAt(x) : v);
+    }
     double err = 0.0;
     if (!std::isfinite(got)) {
       err = std::isfinite(strict) ? INFINITY : 0.0;  // coverage lost
