@@ -58,6 +58,20 @@ bool sameFunction(const Interval& a, const Interval& b) {
   return a.source == b.source && a.sigma == b.sigma;
 }
 
+// The one interval of list[first, last] (clamped to the list) whose closed range holds x, or
+// nullptr when none or several do.
+const Interval* coveringOnly(std::span<const Interval> list, std::ptrdiff_t first,
+                             std::ptrdiff_t last, double x) {
+  const Interval* found = nullptr;
+  for (std::ptrdiff_t i = std::max<std::ptrdiff_t>(0, first);
+       i <= std::min<std::ptrdiff_t>(last, std::ssize(list) - 1); ++i) {
+    if (!(list[i].b0 <= x && x <= list[i].b1)) continue;
+    if (found != nullptr) return nullptr;
+    found = &list[i];
+  }
+  return found;
+}
+
 bool sameInterval(const Interval& a, const Interval& b) {
   return a.b0 == b.b0 && a.b1 == b.b1 && a.source == b.source && a.sigma == b.sigma &&
          a.origin == b.origin && a.side == b.side && a.pending() == b.pending();
@@ -291,46 +305,83 @@ std::span<const double> InvariantChecker::pointwiseMinSamples(const EdgeUpdateEv
   for (const auto part : rewrittenParts)
     if (!part.empty()) from = std::min(from, part.front().b0), to = std::max(to, part.back().b1);
   from -= tiny, to += tiny;
-  std::vector<double>& xs = samples_;
-  xs.clear();
   const int uniform = 32;
   // Only the k whose sample can fall in [from, to] are tried (each still tested as it is
-  // computed, so the samples are the same); a range that is not finite tries them all.
-  int kFirst = 0, kLast = uniform;
+  // computed); a range that is not finite tries them all.
+  int k = 0, kLast = uniform;
   if (std::isfinite(from) && std::isfinite(to) && e.edgeLength > 0.0) {
-    kFirst = static_cast<int>(std::clamp(std::floor(from / e.edgeLength * uniform) - 1.0, 0.0, double(uniform)));
+    k = static_cast<int>(std::clamp(std::floor(from / e.edgeLength * uniform) - 1.0, 0.0, double(uniform)));
     kLast = static_cast<int>(std::clamp(std::ceil(to / e.edgeLength * uniform) + 1.0, 0.0, double(uniform)));
   }
-  for (int k = kFirst; k <= kLast; ++k) {
-    const double x = e.edgeLength * k / uniform;
-    if (x >= from && x <= to) xs.push_back(x);
-  }
+  const auto nextUniform = [&] {
+    for (; k <= kLast; ++k) {
+      const double x = e.edgeLength * k / uniform;
+      if (x >= from && x <= to) return ++k, x;
+    }
+    return double(INFINITY);
+  };
+
   // Inside every piece between consecutive endpoints of the three lists: a D2 overlap or a D1
   // sliver is far shorter than the uniform spacing, and which function wins there is what
   // steps 1–4 decide (otherwise an overlap handed to the longer side goes unseen).
-  // The endpoints of a well-formed list are already in order, so the two lists' are merged
-  // rather than sorted; a list that is not (a violation the cheap tier reports) is sorted.
+  // The endpoints of a well-formed list are already in order, so the lists' are merged rather
+  // than sorted; a list that is not (a violation the cheap tier reports) is sorted. The
+  // neighbours of the rewritten part are the same intervals in both lists (changedRange
+  // compared them): their ends are taken once.
   std::vector<double>& ends = ends_;
   ends.clear();
   for (const Interval& w : beforeNear) ends.insert(ends.end(), {w.b0, w.b1});
   const auto afterStart = static_cast<std::ptrdiff_t>(ends.size());
-  for (const Interval& w : afterNear) ends.insert(ends.end(), {w.b0, w.b1});
+  const std::size_t sameFirst = changed.afterLo >= 1 ? 1 : 0;
+  const std::size_t sameLast = changed.afterHi < e.after.size() ? 1 : 0;
+  for (const Interval& w : afterNear.subspan(sameFirst, afterNear.size() - sameFirst - sameLast))
+    ends.insert(ends.end(), {w.b0, w.b1});
   const auto incomingStart = static_cast<std::ptrdiff_t>(ends.size());
   ends.insert(ends.end(), {e.incoming.b0, e.incoming.b1});
-  if (std::is_sorted(ends.begin(), ends.begin() + afterStart) &&
-      std::is_sorted(ends.begin() + afterStart, ends.begin() + incomingStart) &&
-      std::is_sorted(ends.begin() + incomingStart, ends.end())) {
-    mergeRuns(ends, afterStart, incomingStart, merged_);
-  } else {
-    std::sort(ends.begin(), ends.end());
+  const bool inOrder = std::is_sorted(ends.begin(), ends.begin() + afterStart) &&
+                       std::is_sorted(ends.begin() + afterStart, ends.begin() + incomingStart) &&
+                       std::is_sorted(ends.begin() + incomingStart, ends.end());
+  if (inOrder) mergeRuns(ends, afterStart, incomingStart, scratch_);
+  else std::sort(ends.begin(), ends.end());
+
+  // Inside a piece where one interval of each list covers the piece with the same function, a
+  // sample the incoming interval does not reach even with the slack has the old list's values
+  // to the bit: every error the sweep computes there is 0 (see worstPointwiseMinError), so it is
+  // not taken. (Most of the rewritten range is such: an old interval the incoming one cut
+  // shorter, away from the cut.) Inside a piece the intervals covering a point are those at
+  // its midpoint when the lists are in order, which is what this needs.
+  std::ptrdiff_t kBefore = lastStartingBefore(e.before, ends.front());
+  std::ptrdiff_t kAfter = lastStartingBefore(e.after, ends.front());
+  const std::ptrdiff_t numBefore = std::ssize(e.before), numAfter = std::ssize(e.after);
+  const auto sameFunctionOver = [&](double m) {
+    while (kBefore + 1 < numBefore && e.before[kBefore + 1].b0 <= m) ++kBefore;
+    while (kAfter + 1 < numAfter && e.after[kAfter + 1].b0 <= m) ++kAfter;
+    if (!inOrder) return false;
+    const Interval* oldOne = coveringOnly(e.before, kBefore - 1, kBefore + 1, m);
+    const Interval* newOne = coveringOnly(e.after, kAfter - 1, kAfter, m);
+    return oldOne != nullptr && newOne != nullptr && sameFunction(*oldOne, *newOne);
+  };
+  const double reachFrom = e.incoming.b0 - tiny, reachTo = e.incoming.b1 + tiny;
+  const auto incomingNear = [&](double x) { return x >= reachFrom && x <= reachTo; };
+
+  // The uniform samples and the midpoints, merged in order as they are made: a uniform sample at
+  // an endpoint is always taken.
+  std::vector<double>& xs = samples_;
+  xs.clear();
+  double u = nextUniform();
+  for (std::size_t i = 0; i + 1 < ends.size(); ++i) {
+    const double p = ends[i], q = ends[i + 1];
+    if (!(q > p)) continue;
+    const double m = 0.5 * (p + q);
+    const bool same = sameFunctionOver(m);
+    for (; u <= p; u = nextUniform()) xs.push_back(u);
+    for (; u < m; u = nextUniform())
+      if (!same || incomingNear(u)) xs.push_back(u);
+    if (!same || incomingNear(m)) xs.push_back(m);
+    for (; u < q; u = nextUniform())
+      if (!same || incomingNear(u)) xs.push_back(u);
   }
-  const std::size_t numUniform = xs.size();
-  for (std::size_t i = 0; i + 1 < ends.size(); ++i)
-    if (ends[i + 1] > ends[i]) xs.push_back(0.5 * (ends[i] + ends[i + 1]));
-  merged_.resize(xs.size());
-  std::merge(xs.begin(), xs.begin() + static_cast<std::ptrdiff_t>(numUniform),
-             xs.begin() + static_cast<std::ptrdiff_t>(numUniform), xs.end(), merged_.begin());
-  xs.swap(merged_);
+  for (; std::isfinite(u); u = nextUniform()) xs.push_back(u);
   return samples_;
 }
 
@@ -385,14 +436,9 @@ PointwiseMinError worstPointwiseMinError(const EdgeUpdateEvent& e, std::span<con
     // (Most samples of an update are such: an old interval the incoming one cut shorter, away
     // from the cut.)
     if (!incomingNear) {
-      const Interval* oldOne = nullptr;
-      int oldCovering = 0, newCovering = 0;
-      for (std::ptrdiff_t i = beforeFirst; i <= beforeLast; ++i)
-        if (e.before[i].b0 <= x && x <= e.before[i].b1) ++oldCovering, oldOne = &e.before[i];
-      const Interval* newOne = nullptr;
-      for (std::ptrdiff_t i = afterFirst; i <= kAfter; ++i)
-        if (e.after[i].b0 <= x && x <= e.after[i].b1) ++newCovering, newOne = &e.after[i];
-      if (oldCovering == 1 && newCovering == 1 && sameFunction(*oldOne, *newOne)) continue;
+      const Interval* oldOne = coveringOnly(e.before, kBefore - 1, kBefore + 1, x);
+      const Interval* newOne = coveringOnly(e.after, kAfter - 1, kAfter, x);
+      if (oldOne != nullptr && newOne != nullptr && sameFunction(*oldOne, *newOne)) continue;
     }
     const double reach = removedSliverReach(x);
     // strict: the minimum of the functions where they really are; loose: the minimum with the
