@@ -407,6 +407,18 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
     const bool atFront = s0 == 0, atBack = s1 == n;
     const Interval* const outerPrev = atFront ? nullptr : &list_[s0 - 1];
     const Interval* const outerNext = atBack ? nullptr : &list_[s1];
+    // No interval of the slice can be a D1 sliver unless it is shorter than ε at the largest
+    // length scale around (tinyLengthBetween takes ε or a ray-end precision, kRayEndRel <=
+    // kTinyIntervalRel, of the interval or a neighbour; steps 3–5 move ranges, never sources):
+    // most of a solve's intervals are told apart by one comparison.
+    double largestScale = edgeLength;
+    for (std::size_t k = 0; k < m; ++k)
+      largestScale = std::max(largestScale, intervalLengthScale(L[k], edgeLength));
+    if (outerPrev != nullptr)
+      largestScale = std::max(largestScale, intervalLengthScale(*outerPrev, edgeLength));
+    if (outerNext != nullptr)
+      largestScale = std::max(largestScale, intervalLengthScale(*outerNext, edgeLength));
+    const double sliverBound = tol::kTinyIntervalRel * largestScale;
 
     // Steps 3–5 repeat while step 4 or 5 changes anything: an interval that grows over a sewn
     // gap can come to touch a coarser neighbour and be a D1 sliver next to it
@@ -437,12 +449,14 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
           // neighbour's whole ε: a longer sliver can be the start of a near saddle's shadow,
           // which fans out downstream where the far rays never reach. The checker applies the
           // same rule (tinyLengthInList) to the whole list, so the outer neighbours count here.
-          const double tiny = tinyLengthBetween(prev, L[r], next, edgeLength);
+          const double length = L[r].length();
+          const double tiny =
+              length < sliverBound ? tinyLengthBetween(prev, L[r], next, edgeLength) : 0.0;
           // An edge shorter than ε has nothing but D1 slivers: the last one left is the edge's
           // distance to the precision its source allows, and step 4 sews it to both ends.
           // Removing it too left the edge uncovered (corpus/fuzz_two_faces/regress/
           // full-coverage-edge-shorter-than-epsilon-lost-its-last-interval).
-          const bool belowTiny = L[r].length() < tiny;
+          const bool belowTiny = length < tiny;
           const bool lastOnShortEdge =
               belowTiny && edgeLength < tiny &&
               (prev == nullptr || prev->b1 < L[r].b0 - tinyLength(*prev, edgeLength)) &&

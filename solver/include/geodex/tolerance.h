@@ -53,6 +53,7 @@ inline constexpr double kTinyIntervalRel = 1e-11;
 /// merged into the far window, it takes the saddle's fan with it
 /// (tests/data/regression/far-source-edge-end-left-to-a-pseudo-source.off).
 inline constexpr double kRayEndRel = 1e-14;
+static_assert(kRayEndRel <= kTinyIntervalRel, "step 3 bounds every D1 threshold by ε (edge_intervals.cpp)");
 
 /// A vertex whose height over the opposite edge of one of its faces is below this × that face's
 /// longest edge lies on the edge, for its pseudo-source windows: its window on the edge is then
