@@ -260,14 +260,64 @@ TEST(Algorithm2, GapsBetweenOldIntervalsGoToTheNewOne) {
 TEST(Algorithm2, D1TinyIntervalIsMergedIntoItsNeighbour) {
   Edge1 e;
   e.insert(make(0.0, 5.0, Vec2(2.0, 1.0), 0.0));
-  e.insert(make(5.0, kL, Vec2(8.0, 1.0), 0.0));
-  // A new interval on a sliver far below ε, shorter there only by rounding: the right
-  // neighbour's source a hair nearer the edge.
+  const Vec2 right(8.0, 1.0);
+  e.insert(make(5.0, kL, right, 0.0));
+  // A new interval on a sliver far below ε at x = 5, from another source (3e-9 away, beyond
+  // kSameSourceRel) that is nearer x by 5e-11, less than ε: the right neighbour may take the
+  // sliver (canTakeSliver).
+  const Vec2 at(5.0, 0.0);
+  const Vec2 toOld = right - at;
+  const double turn = 1e-9, nearer = 5e-11;
+  const Vec2 turned(toOld.x() * std::cos(turn) - toOld.y() * std::sin(turn),
+                    toOld.x() * std::sin(turn) + toOld.y() * std::cos(turn));
+  const Vec2 source = at + turned.normalized() * (toOld.norm() - nearer);
   const double tiny = 0.1 * tol::kTinyIntervalRel * kL;
-  e.insert(make(5.0, 5.0 + tiny, Vec2(8.0, 1.0 - 1e-13), 0.0));
+  const Interval sliver = make(5.0, 5.0 + tiny, source, 0.0);
+  ASSERT_LT(sliver.distanceAt(5.0), make(5.0, kL, right, 0.0).distanceAt(5.0));
+  e.insert(sliver);
   EXPECT_EQ(e.report.degeneracies[DegeneracyKind::D1], 1u);
+  EXPECT_FALSE(e.report.incomingSurvived);
   expectWellFormed(e.list);
   for (const Interval& w : e.list.intervals()) EXPECT_GE(w.length(), tol::kTinyIntervalRel * kL);
+}
+
+TEST(Algorithm2, AnIntervalLongerEverywhereLeavesTheListAsItWas) {
+  // Three old intervals cover [0, L]; the new one starts a hair (far below ε) after the second
+  // one's start, reaches into the third, and is longer everywhere (its source farther from the
+  // edge). Cutting the second one there would leave a D1 sliver of the old interval itself;
+  // nothing of the list may change, and no degeneracy is counted.
+  Edge1 e;
+  e.insert(make(0.0, 3.0, Vec2(1.5, 1.0), 0.0));
+  e.insert(make(3.0, 6.0, Vec2(4.5, 1.0), 0.0));
+  e.insert(make(6.0, kL, Vec2(8.0, 1.0), 0.0));
+  const std::vector<Interval> before(e.list.intervals().begin(), e.list.intervals().end());
+  const Interval longer = make(3.0 + 0.1 * tol::kTinyIntervalRel * kL, 8.0, Vec2(4.0, 5.0), 0.0);
+  for (double x = longer.b0; x <= longer.b1; x += 0.01)
+    ASSERT_GT(longer.distanceAt(x), e.list.distanceAt(x)) << x;
+  e.insert(longer);
+  EXPECT_FALSE(e.report.incomingSurvived);
+  EXPECT_EQ(e.report.degeneracies.count, DegeneracyCounters{}.count);
+  ASSERT_EQ(e.list.intervals().size(), before.size());
+  for (std::size_t i = 0; i < before.size(); ++i) {
+    EXPECT_EQ(e.list.intervals()[i].b0, before[i].b0);
+    EXPECT_EQ(e.list.intervals()[i].b1, before[i].b1);
+    EXPECT_EQ(e.list.intervals()[i].source, before[i].source);
+  }
+}
+
+TEST(Algorithm2, AnIntervalShorterOnlyInAGapIsKeptThere) {
+  // The same longer interval, but the old ones leave a gap wider than ε: there it is the only
+  // distance, and it is kept on exactly the gap.
+  Edge1 e;
+  e.insert(make(0.0, 3.0, Vec2(1.5, 1.0), 0.0));
+  e.insert(make(3.5, kL, Vec2(6.0, 1.0), 0.0));
+  e.insert(make(1.0, 6.0, Vec2(4.0, 5.0), 0.0));
+  EXPECT_TRUE(e.report.incomingSurvived);
+  expectWellFormed(e.list);
+  ASSERT_EQ(e.list.intervals().size(), 3u);
+  EXPECT_EQ(e.list.intervals()[1].b0, 3.0);
+  EXPECT_EQ(e.list.intervals()[1].b1, 3.5);
+  EXPECT_EQ(e.list.intervals()[1].source, Vec2(4.0, 5.0));
 }
 
 TEST(Algorithm2, D2TinyOverlapMeetsAtTheMidpoint) {
