@@ -129,6 +129,16 @@ SampledWinners sampleWinners(const Interval& in, const Interval& old, double edg
   return s;
 }
 
+// Step 1's D2 tests for an old interval w the incoming range reaches: w reaches over the incoming
+// start (end) by less than `overlapTiny`, ε of the larger of the two, without covering the whole
+// incoming range. Shared by step 1 and incomingLosesEverywhere.
+bool overlapsStartByD2(const Interval& w, const Interval& in, double overlapTiny) {
+  return w.b0 < in.b0 && w.b1 - in.b0 < overlapTiny && w.b1 < in.b1;
+}
+bool overlapsEndByD2(const Interval& w, const Interval& in, double overlapTiny) {
+  return w.b1 > in.b1 && in.b1 - w.b0 < overlapTiny && w.b0 > in.b0;
+}
+
 // Whether the old intervals `reached` (those overlapping the incoming range, in order) leave the
 // incoming interval nothing: they cover its whole range, with no D2 overlap at its ends, and on
 // each one's part of it the incoming one wins at no sample of keepShorter (or is the same
@@ -141,8 +151,8 @@ bool incomingLosesEverywhere(const Interval& in, std::span<const Interval> reach
   for (const Interval& old : reached) {
     if (old.b0 > cursor) return false;  // a gap the incoming interval would fill
     const double overlapTiny = std::max(tinyLength(old, edgeLength), tinyLength(in, edgeLength));
-    if (old.b0 < in.b0 && old.b1 - in.b0 < overlapTiny && old.b1 < in.b1) return false;  // D2
-    if (old.b1 > in.b1 && in.b1 - old.b0 < overlapTiny && old.b0 > in.b0) return false;  // D2
+    if (overlapsStartByD2(old, in, overlapTiny) || overlapsEndByD2(old, in, overlapTiny))
+      return false;
     if (!sameSource(in, old, edgeLength)) {
       Interval cut = old;
       cut.b0 = std::max(old.b0, in.b0);
@@ -410,8 +420,7 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
       const Interval::MinAt minAt = w.minAt();
       auto oldPiece = [&](Interval& piece) { keepOrRequeue(piece, minX, minAt); };
       const double overlapTiny = std::max(tinyLength(w, edgeLength), tinyLength(in, edgeLength));
-      if (w.b0 < in.b0 && w.b1 - in.b0 < overlapTiny &&
-          w.b1 < in.b1) {  // D2 at the new one's start
+      if (overlapsStartByD2(w, in, overlapTiny)) {  // D2 at the new one's start
         ++report.degeneracies[DegeneracyKind::D2];
         const double meet = overlapMeetingPoint(w, in, in.b0, w.b1, edgeLength);
         w.b1 = meet;
@@ -420,7 +429,7 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
         out.push_back(w);
         continue;
       }
-      if (w.b1 > in.b1 && in.b1 - w.b0 < overlapTiny && w.b0 > in.b0) {  // D2 at the new one's end
+      if (overlapsEndByD2(w, in, overlapTiny)) {  // D2 at the new one's end
         ++report.degeneracies[DegeneracyKind::D2];
         const double meet = overlapMeetingPoint(in, w, w.b0, in.b1, edgeLength);
         w.b0 = meet;
