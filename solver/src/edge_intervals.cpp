@@ -139,13 +139,24 @@ bool overlapsEndByD2(const Interval& w, const Interval& in, double overlapTiny) 
   return w.b1 > in.b1 && in.b1 - w.b0 < overlapTiny && w.b0 > in.b0;
 }
 
-// Whether the old intervals `reached` (those overlapping the incoming range, in order) leave the
-// incoming interval nothing: they cover its whole range, with no D2 overlap at its ends, and on
-// each one's part of it the incoming one wins at no sample of keepShorter (or is the same
-// geodesic). Steps 1 and 2 would then cut old intervals at the incoming ends only for step 5 to
-// join the pieces again (and step 3 to take a piece cut thinner than ε as a D1 sliver).
+// What incomingLosesEverywhere learned of the old intervals `reached` (those overlapping the
+// incoming range, in order): on the first `lostPrefix` of them the old one is kept (the incoming
+// one wins at no sample of keepShorter, or is the same geodesic), and when `stopSampled`, `stop`
+// holds keepShorter's samples for the next one, cut to the incoming range as step 1 cuts it.
+// Steps 1 and 2 take these verdicts instead of sampling the same pieces again.
+struct ReachedScan {
+  std::size_t lostPrefix = 0;
+  bool stopSampled = false;
+  SampledWinners stop;
+};
+
+// Whether the old intervals `reached` leave the incoming interval nothing: they cover its whole
+// range, with no D2 overlap at its ends, and on each one's part of it the incoming one wins at no
+// sample of keepShorter (or is the same geodesic). Steps 1 and 2 would then cut old intervals at
+// the incoming ends only for step 5 to join the pieces again (and step 3 to take a piece cut
+// thinner than ε as a D1 sliver).
 bool incomingLosesEverywhere(const Interval& in, std::span<const Interval> reached,
-                             double edgeLength) {
+                             double edgeLength, ReachedScan& scan) {
   if (reached.empty()) return false;
   double cursor = in.b0;
   for (const Interval& old : reached) {
@@ -157,9 +168,13 @@ bool incomingLosesEverywhere(const Interval& in, std::span<const Interval> reach
       Interval cut = old;
       cut.b0 = std::max(old.b0, in.b0);
       cut.b1 = std::min(old.b1, in.b1);
-      const SampledWinners sampled = sampleWinners(in, cut, edgeLength);
-      if (!sampled.uniform() || sampled.wins[0]) return false;
+      scan.stop = sampleWinners(in, cut, edgeLength);
+      if (!scan.stop.uniform() || scan.stop.wins[0]) {
+        scan.stopSampled = true;
+        return false;
+      }
     }
+    ++scan.lostPrefix;
     cursor = old.b1;
   }
   return cursor >= in.b1;
@@ -179,11 +194,10 @@ bool incomingLosesEverywhere(const Interval& in, std::span<const Interval> reach
 // be off or missing. A root is taken where the two distances really agree there; otherwise (D4)
 // the change is located by bisection on the exact difference of the two distance functions.
 template <typename NewPiece, typename OldPiece>
-void keepShorter(const Interval& in, const Interval& old, double edgeLength,
-                 EdgeUpdateReport& report, std::vector<Interval>& out, NewPiece&& newPiece,
-                 OldPiece&& oldPiece) {
+void keepShorter(const Interval& in, const Interval& old, const SampledWinners& sampled,
+                 double edgeLength, EdgeUpdateReport& report, std::vector<Interval>& out,
+                 NewPiece&& newPiece, OldPiece&& oldPiece) {
   const double lo = old.b0, hi = old.b1;
-  const SampledWinners sampled = sampleWinners(in, old, edgeLength);
   const auto& sample = sampled.sample;
   const auto& f = sampled.f;
   const auto& g = sampled.g;
@@ -376,8 +390,9 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
   // on bunny00, reaching 13 intervals each, mostly a saddle's whole-edge windows (its windows
   // along its own edges lose, by the triangle inequality, to those that reached it). The
   // report names the intervals it lost to; the full verify tier samples the incoming range.
+  ReachedScan scan;
   if (incomingLosesEverywhere(incoming, std::span<const Interval>(list_).subspan(j0, j1 - j0),
-                              edgeLength)) {
+                              edgeLength, scan)) {
     report.first = j0;
     report.last = j1;
     return;
@@ -460,7 +475,18 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
         out.push_back(w);
       } else {
         oldPiece(w);  // as cut by step 1; keepShorter may cut it further
-        keepShorter(in, w, edgeLength, report, out, newPiece, oldPiece);
+        // (The scan saw the same cut: only an interval after a D2 overlap, which ends the scan,
+        // is cut differently.)
+        const std::size_t reachedIndex = k - j0;
+        if (reachedIndex < scan.lostPrefix) {
+          out.push_back(w);
+        } else {
+          keepShorter(in, w,
+                      reachedIndex == scan.lostPrefix && scan.stopSampled
+                          ? scan.stop
+                          : sampleWinners(in, w, edgeLength),
+                      edgeLength, report, out, newPiece, oldPiece);
+        }
       }
       if (hasRight) {
         incomingDone = true;
