@@ -139,6 +139,26 @@ bool overlapsEndByD2(const Interval& w, const Interval& in, double overlapTiny) 
   return w.b1 > in.b1 && in.b1 - w.b0 < overlapTiny && w.b0 > in.b0;
 }
 
+// Whether the incoming interval loses on all of the piece `cut` of an old one, told from one end
+// when its source lies on the edge line beside the piece (a pseudo-source's window along its
+// own edge, most of the lost updates): its distance grows at slope 1 away from the source and
+// no distance grows faster, so f − g is smallest at the end nearest the source. Lost there by
+// twice the tie tolerance (rounding is a few ulps, far below it), it is lost, to that tolerance,
+// at every sample keepShorter would take: the same verdict, from two square roots.
+bool losesFromTheNearEnd(const Interval& in, const Interval& cut) {
+  if (in.source.y() != 0.0) return false;
+  double x;
+  if (in.source.x() <= cut.b0) {
+    x = cut.b0;
+  } else if (in.source.x() >= cut.b1) {
+    x = cut.b1;
+  } else {
+    return false;
+  }
+  const double f = in.distanceAt(x), g = cut.distanceAt(x);
+  return f - g > 2.0 * tol::kTieRel * (f + g + cut.length());
+}
+
 // What incomingLosesEverywhere learned of the old intervals `reached` (those overlapping the
 // incoming range, in order): on the first `lostPrefix` of them the old one is kept (the incoming
 // one wins at no sample of keepShorter, or is the same geodesic), and when `stopSampled`, `stop`
@@ -168,10 +188,12 @@ bool incomingLosesEverywhere(const Interval& in, std::span<const Interval> reach
       Interval cut = old;
       cut.b0 = std::max(old.b0, in.b0);
       cut.b1 = std::min(old.b1, in.b1);
-      scan.stop = sampleWinners(in, cut, edgeLength);
-      if (!scan.stop.uniform() || scan.stop.wins[0]) {
-        scan.stopSampled = true;
-        return false;
+      if (!losesFromTheNearEnd(in, cut)) {
+        scan.stop = sampleWinners(in, cut, edgeLength);
+        if (!scan.stop.uniform() || scan.stop.wins[0]) {
+          scan.stopSampled = true;
+          return false;
+        }
       }
     }
     ++scan.lostPrefix;

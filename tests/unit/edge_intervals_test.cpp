@@ -163,6 +163,31 @@ TEST(Algorithm2, ATieBetweenASourceAndASaddleOnItsLineGoesToTheSourceInEitherOrd
   }
 }
 
+// Two pseudo-sources on the edge line at or behind its start, the far one reaching the near one
+// straight (σ_near = σ_far + their distance): their distances tie on the whole window, up to
+// rounding, and the far one (σ smaller) keeps it in either order. The near one's window is a
+// pseudo-source's window along its own edge; the far one arriving second may round a few ulps
+// longer at the start, which must not make it lose there without the tie rule being asked.
+TEST(Algorithm2, TwoSourcesOnTheEdgeLineTieToTheFarOneInEitherOrder) {
+  int roundedLonger = 0;
+  for (int k = 0; k < 400; ++k) {
+    const double a = 0.37 + 0.0173 * k, sigmaFar = 0.11 * (k % 37) + 0.3, start = 0.01 * (k % 53);
+    const Interval far = make(start, kL, Vec2(-a, 0.0), sigmaFar);
+    const Interval near = make(start, kL, Vec2(0.0, 0.0), sigmaFar + a);
+    if (far.distanceAt(start) > near.distanceAt(start)) ++roundedLonger;
+    for (const bool nearFirst : {true, false}) {
+      Edge1 e;
+      e.insert(nearFirst ? near : far);
+      e.insert(nearFirst ? far : near);
+      expectWellFormed(e.list);
+      ASSERT_EQ(e.list.intervals().size(), 1u) << "a = " << a;
+      EXPECT_EQ(e.list.intervals()[0].source, far.source)
+          << "a = " << a << (nearFirst ? ", near first" : ", far first");
+    }
+  }
+  EXPECT_GT(roundedLonger, 0) << "no case where rounding makes the far source longer at the start";
+}
+
 // corpus/fuzz_edge_update/regress/no-tiny-interval-step-5-merge-makes-a-sliver-takeable-after-
 // step-3: two windows of near-equal sources (σ 4e-11 and 5e-11) side by side, then a 9e-11 gap
 // and a 9e-11 sliver of a third near-equal one; a window from 49888 away, long everywhere, fills
