@@ -76,8 +76,8 @@ void grewUnpropagated(Interval& w) {
   markChanged(w);
 }
 
-// Which of the two intervals is shorter at the samples keepShorter (below) decides by: old.b0,
-// the point x* or the feet, old.b1.
+// Which of the two intervals is shorter at the samples keepShorter (below) decides by on old's
+// piece [lo, hi]: lo, the point x* or the feet, hi.
 struct SampledWinners {
   double sample[4];
   double f[4], g[4];  // the incoming and the old distance at each sample
@@ -90,7 +90,8 @@ struct SampledWinners {
   }
 };
 
-SampledWinners sampleWinners(const Interval& in, const Interval& old, double edgeLength) {
+SampledWinners sampleWinners(const Interval& in, const Interval& old, double lo, double hi,
+                             double edgeLength) {
   SampledWinners s;
   // (References, not a structured binding: clang 14 cannot capture one in agreeAt.)
   auto& sample = s.sample;
@@ -98,7 +99,6 @@ SampledWinners sampleWinners(const Interval& in, const Interval& old, double edg
   auto& g = s.g;
   auto& wins = s.wins;
   int& numSamples = s.numSamples;
-  const double lo = old.b0, hi = old.b1;
   sample[numSamples++] = lo;
   const double y1 = in.source.y(), y2 = old.source.y();
   if (y1 != y2) {
@@ -139,24 +139,24 @@ bool overlapsEndByD2(const Interval& w, const Interval& in, double overlapTiny) 
   return w.b1 > in.b1 && in.b1 - w.b0 < overlapTiny && w.b0 > in.b0;
 }
 
-// Whether the incoming interval loses on all of the piece `cut` of an old one, told from one end
+// Whether the incoming interval loses on all of the piece [lo, hi] of an old one, told from one end
 // when its source lies on the edge line beside the piece (a pseudo-source's window along its
 // own edge, most of the lost updates): its distance grows at slope 1 away from the source and
 // no distance grows faster, so f − g is smallest at the end nearest the source. Lost there by
 // twice the tie tolerance (rounding is a few ulps, far below it), it is lost, to that tolerance,
 // at every sample keepShorter would take: the same verdict, from two square roots.
-bool losesFromTheNearEnd(const Interval& in, const Interval& cut) {
+bool losesFromTheNearEnd(const Interval& in, const Interval& old, double lo, double hi) {
   if (in.source.y() != 0.0) return false;
   double x;
-  if (in.source.x() <= cut.b0) {
-    x = cut.b0;
-  } else if (in.source.x() >= cut.b1) {
-    x = cut.b1;
+  if (in.source.x() <= lo) {
+    x = lo;
+  } else if (in.source.x() >= hi) {
+    x = hi;
   } else {
     return false;
   }
-  const double f = in.distanceAt(x), g = cut.distanceAt(x);
-  return f - g > 2.0 * tol::kTieRel * (f + g + cut.length());
+  const double f = in.distanceAt(x), g = old.distanceAt(x);
+  return f - g > 2.0 * tol::kTieRel * (f + g + (hi - lo));
 }
 
 // What incomingLosesEverywhere learned of the old intervals `reached` (those overlapping the
@@ -185,11 +185,9 @@ bool incomingLosesEverywhere(const Interval& in, std::span<const Interval> reach
     if (overlapsStartByD2(old, in, overlapTiny) || overlapsEndByD2(old, in, overlapTiny))
       return false;
     if (!sameSource(in, old, edgeLength)) {
-      Interval cut = old;
-      cut.b0 = std::max(old.b0, in.b0);
-      cut.b1 = std::min(old.b1, in.b1);
-      if (!losesFromTheNearEnd(in, cut)) {
-        scan.stop = sampleWinners(in, cut, edgeLength);
+      const double lo = std::max(old.b0, in.b0), hi = std::min(old.b1, in.b1);
+      if (!losesFromTheNearEnd(in, old, lo, hi)) {
+        scan.stop = sampleWinners(in, old, lo, hi, edgeLength);
         if (!scan.stop.uniform() || scan.stop.wins[0]) {
           scan.stopSampled = true;
           return false;
@@ -205,7 +203,7 @@ bool incomingLosesEverywhere(const Interval& in, std::span<const Interval> reach
 // ===  Step 2 for one old interval ================================================================
 // Where on old's range [old.b0, old.b1] is the incoming interval shorter? Appends the pieces, in
 // order, to `out`: pieces of the old interval (the first keeps old's state; all are marked
-// changed when old was cut) and pieces of the incoming one (made by newPiece).
+// changed when old was cut) and pieces of the incoming one (appended by newPiece).
 //
 // h = f − g (incoming minus old) has h' = cos θ_in − cos θ_old, zero only where x is collinear
 // with the two sources (both lie on one side of the line, heights >= 0): h is monotone on either
@@ -227,7 +225,7 @@ void keepShorter(const Interval& in, const Interval& old, const SampledWinners& 
   const int numSamples = sampled.numSamples;
   if (sampled.uniform()) {  // the common case: one of the two is shorter on the whole piece
     if (wins[0]) {
-      out.push_back(newPiece(lo, hi));
+      newPiece(lo, hi);
     } else {
       out.push_back(old);  // as the caller cut it
     }
@@ -280,7 +278,7 @@ void keepShorter(const Interval& in, const Interval& old, const SampledWinners& 
   cut[++m] = hi;
   for (int k = 0; k < m; ++k) {
     if (cutWins[k]) {
-      out.push_back(newPiece(cut[k], cut[k + 1]));
+      newPiece(cut[k], cut[k + 1]);
     } else {
       Interval w = old;
       w.b0 = cut[k];
@@ -390,11 +388,10 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
   // report.incomingSurvived can tell whether any of it is left.
   constexpr std::uint8_t kFromIncoming = 4;
   Interval in;
-  auto newPiece = [&](double lo, double hi) {
-    Interval w = in;
-    w.b0 = lo;
-    w.b1 = hi;
-    return w;
+  auto newPiece = [&](double lo, double hi) {  // appends the incoming interval's piece [lo, hi]
+    out.push_back(in);
+    out.back().b0 = lo;
+    out.back().b1 = hi;
   };
 
   // --- The slice this update reads and rewrites: the old intervals the incoming range reaches,
@@ -436,7 +433,7 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
     double cursor = in.b0;      // the incoming range up to here is accounted for
     bool incomingDone = false;  // the incoming interval's pieces are all in `out`
     auto finishIncoming = [&] {
-      if (!incomingDone && cursor < in.b1) out.push_back(newPiece(cursor, in.b1));
+      if (!incomingDone && cursor < in.b1) newPiece(cursor, in.b1);
       incomingDone = true;
     };
     for (std::size_t k = s0; k < s1; ++k) {
@@ -483,14 +480,9 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
         out.push_back(left);
         w.b0 = in.b0;
       }
-      Interval right = w;
       const bool hasRight = w.b1 > in.b1;
-      if (hasRight) {  // 1.4: separate at interb1
-        w.b1 = in.b1;
-        right.b0 = in.b1;
-        oldPiece(right);
-      }
-      if (w.b0 > cursor) out.push_back(newPiece(cursor, w.b0));  // a gap: the new one's
+      if (hasRight) w.b1 = in.b1;  // 1.4: separate at interb1 (the right piece is added below)
+      if (w.b0 > cursor) newPiece(cursor, w.b0);  // a gap: the new one's
       cursor = w.b1;
       if (sameSource(in, w, edgeLength)) {  // the same geodesic arriving again: keep the old
         oldPiece(w);
@@ -506,13 +498,16 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
           keepShorter(in, w,
                       reachedIndex == scan.lostPrefix && scan.stopSampled
                           ? scan.stop
-                          : sampleWinners(in, w, edgeLength),
+                          : sampleWinners(in, w, w.b0, w.b1, edgeLength),
                       edgeLength, report, out, newPiece, oldPiece);
         }
       }
-      if (hasRight) {
+      if (hasRight) {  // 1.4's right piece
         incomingDone = true;
-        out.push_back(right);
+        out.push_back(before);
+        Interval& right = out.back();
+        right.b0 = in.b1;
+        oldPiece(right);
       }
     }
     finishIncoming();
