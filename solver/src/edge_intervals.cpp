@@ -555,6 +555,12 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
         removed = false;
         std::size_t w = 0;
         for (std::size_t r = 0; r < m; ++r) {
+          const double length = L[r].length();
+          if (length >= sliverBound) {  // no D1 threshold reaches this far (see sliverBound)
+            if (w != r) L[w] = L[r];
+            ++w;
+            continue;
+          }
           // L[r]'s neighbours: the last one kept and the next one, or the slice's outer ones (one
           // of those taking L[r] makes step 3 remove it here; the update is then done again
           // over a wider slice, where the neighbour can grow).
@@ -565,9 +571,7 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
           // neighbour's whole ε: a longer sliver can be the start of a near saddle's shadow,
           // which fans out downstream where the far rays never reach. The checker applies the
           // same rule (tinyLengthInList) to the whole list, so the outer neighbours count here.
-          const double length = L[r].length();
-          const double tiny =
-              length < sliverBound ? tinyLengthBetween(prev, L[r], next, edgeLength) : 0.0;
+          const double tiny = tinyLengthBetween(prev, L[r], next, edgeLength);
           // An edge shorter than ε has nothing but D1 slivers: the last one left is the edge's
           // distance to the precision its source allows, and step 4 sews it to both ends.
           // Removing it too left the edge uncovered (corpus/fuzz_two_faces/regress/
