@@ -4,8 +4,13 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <limits>
+#include <optional>
 #include <sstream>
+#include <vector>
 
 #include "geodex/error.h"
 #include "geodex/verify/mesh_generators.h"
@@ -242,6 +247,30 @@ TEST(CheckRegression, APropagationWithASourceFartherThanAnyMeshCanPutItIsOutside
   near.window.source = Vec2(-1.4482826745237228e+65, 1.4482826745237228e+65);
   const Verdict w = checkPropagation(near);
   EXPECT_TRUE(w.interesting && w.ok()) << w.failed << ": " << w.message;
+}
+
+// A face 2.3e-159 across squares its sides into subnormals at its own scale: the decoder took e0's
+// length there, 2.3e-7 of it too long, and ended the window at it, beyond the edge the solver
+// sees in mesh units; the ray through the window's end then left the face outside every child.
+// The decoder measures the edge where the solver does
+// (corpus/fuzz_propagation/regress/coverage-window-end-beyond-its-edge-by-a-subnormal-edge-length).
+TEST(CheckRegression, ADecodedWindowOnAFaceWithSubnormalSquaresEndsOnItsEdge) {
+  const std::vector<std::uint8_t> bytes = {
+      0xbb, 0xff, 0x00, 0x00, 0x00, 0x00, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0x00, 0x28, 0x00,
+      0x00, 0xff, 0x00, 0x00, 0xff, 0x40, 0xe7, 0x27, 0x00, 0x48, 0x00, 0x00, 0x00, 0x00, 0x00,
+      0x00, 0x00, 0x00, 0xe0, 0xfe, 0xfd, 0xff, 0x6d, 0x7e, 0x00, 0x18, 0xff, 0xff, 0xff, 0x6d,
+      0x6d, 0xff, 0x00, 0x00, 0x00, 0xa9, 0xa9, 0x24, 0x00, 0xff, 0x65, 0x7e, 0x30, 0x80, 0x00,
+      0x00, 0x95, 0x01, 0x90, 0x90, 0x90, 0x90, 0x90, 0x90, 0x90, 0x90, 0x00, 0x00, 0x00, 0x00,
+      0x09};
+  const std::optional<PropagationCase> c = decodePropagation(bytes);
+  ASSERT_TRUE(c.has_value());
+  const Vec3 &v0 = c->face[0], &v2 = c->face[1], &v1 = c->face[2];
+  const MeshUnit unit =
+      meshUnitOf(std::max({v0.cwiseAbs().maxCoeff(), v1.cwiseAbs().maxCoeff(), v2.cwiseAbs().maxCoeff()}));
+  ASSERT_LT((v2 - v0).squaredNorm(), std::numeric_limits<double>::min()) << "not subnormal: the case lost its point";
+  EXPECT_LE(c->window.b1 * unit.inverse, ((v2 - v0) * unit.inverse).norm());
+  const Verdict v = checkPropagation(*c);
+  EXPECT_TRUE(v.interesting && v.ok()) << v.failed << ": " << v.message;
 }
 
 }  // namespace

@@ -92,7 +92,15 @@ std::optional<PropagationCase> makePropagationCase(const PropagationSpec& s) {
   const Vec3 &v0 = c.face[0], &v2 = c.face[1], &v1 = c.face[2];
   // The face a mesh would accept: every edge in range (no zero-length edge, no underflow).
   if (!isFinite(v0) || !isFinite(v1) || !isFinite(v2) || !faceInRange(v0, v1, v2)) return std::nullopt;
-  const double L = (v2 - v0).norm();
+  // e0's length as the solver has it, in the face's mesh units (checkPropagation works there),
+  // scaled back by the power of two. Taken at the input's own scale, a face of 1e-159 squared its
+  // sides into subnormals, and the window ending at that length reached 2.3e-7 of it beyond the
+  // edge (regress/coverage-window-end-beyond-its-edge-by-a-subnormal-edge-length). Where the
+  // length scaled back is not exact (subnormal itself), no window of this format ends at it.
+  const MeshUnit faceUnit = meshUnitOf(std::max({v0.cwiseAbs().maxCoeff(), v1.cwiseAbs().maxCoeff(), v2.cwiseAbs().maxCoeff()}));
+  const double lengthInUnits = ((v2 - v0) * faceUnit.inverse).norm();
+  if (inFileUnitsRange(lengthInUnits, faceUnit) != ScaledRange::Normal) return std::nullopt;
+  const double L = lengthInUnits * faceUnit.unit;
   Interval& w = c.window;
   double b0 = latticeValue(s.b0, 0, 16) / 16.0 * L + nudgeValue(s.b0, L);
   double b1 = latticeValue(s.b1, 0, 16) / 16.0 * L + nudgeValue(s.b1, L);
@@ -383,15 +391,25 @@ void describe(const PropagationCase& c, std::ostream& out) {
       << "source " << w.source.x() << " " << w.source.y() << "   # in e0's frame, y on the far side from v1\n"
       << "sigma " << w.sigma << "\n"
       << "e1 " << (c.e1Forward ? "v0->v1" : "v1->v0") << "\ne2 " << (c.e2Forward ? "v1->v2" : "v2->v1") << "\n";
-  const LocalWindow local = localWindowOf(c);
-  out << "# local frame: " << describeLocal(local) << "; local scale " << localScale(local) << "\n";
+  // What the check computes: the case in its face's mesh units, as the solver meets it (at the
+  // input's own scale a tiny face's squares are subnormal, and the frame comes out otherwise).
+  MeshUnit unit;
+  const std::optional<PropagationCase> inUnits = inMeshUnits(c, unit);
+  if (!inUnits) {
+    out << "# a value is beyond the largest double in mesh units: outside the solver's range\n";
+    return;
+  }
+  const PropagationCase& m = *inUnits;
+  const LocalWindow local = localWindowOf(m);
+  out << "# local frame, in mesh units of 2^" << unit.exponent << ": " << describeLocal(local)
+      << "; local scale " << localScale(local) << "\n";
   const LocalPropagation r = propagateLocal(local);
   out << "# propagateLocal: " << describeResult(r) << "\n";
   const ExactFig6 e = exactFig6(local);
   out << "# exact tree: " << (e.branch ? std::string(name(*e.branch)) : "undecided, near " + e.nearWhat) << "\n";
   for (int i = 0; i < r.numChildren; ++i) {
-    const ChildInterval made = childIntervalOf(c, local, r.children[i]);
-    out << "# childInterval e" << int(r.children[i].edge) << (childEdgeOf(c, r.children[i].edge).forward ? "" : " (backward)") << ": "
+    const ChildInterval made = childIntervalOf(m, local, r.children[i]);
+    out << "# childInterval e" << int(r.children[i].edge) << (childEdgeOf(m, r.children[i].edge).forward ? "" : " (backward)") << ": "
         << (made.outcome == ChildOutcome::Made ? describeInterval(made.interval)
             : made.outcome == ChildOutcome::Empty ? std::string("empty")
                                                   : std::string("dropped: the source is seen from outside the face"))
