@@ -275,15 +275,6 @@ double sewingSlack(const EdgeUpdateEvent& e, std::span<const Interval> beforeNea
   return std::max({tiny, tinyLength(e.incoming, e.edgeLength), sewLength(e.incoming, e.edgeLength)});
 }
 
-// Sorts v made of three sorted runs, [0, a), [a, b) and [b, size) — the last the two ends of
-// the incoming interval — through scratch, without allocating once the vectors have grown.
-void mergeRuns(std::vector<double>& v, std::ptrdiff_t a, std::ptrdiff_t b, std::vector<double>& scratch) {
-  scratch.resize(static_cast<std::size_t>(b));
-  std::merge(v.begin(), v.begin() + a, v.begin() + a, v.begin() + b, scratch.begin());
-  const double last[] = {v[b], v[b + 1]};
-  std::merge(scratch.begin(), scratch.end(), std::begin(last), std::end(last), v.begin());
-}
-
 }  // namespace
 
 // The samples of the pointwise-minimum check, sorted, so that one sweep over each list finds the
@@ -324,64 +315,102 @@ std::span<const double> InvariantChecker::pointwiseMinSamples(const EdgeUpdateEv
   // Inside every piece between consecutive endpoints of the three lists: a D2 overlap or a D1
   // sliver is far shorter than the uniform spacing, and which function wins there is what
   // steps 1–4 decide (otherwise an overlap handed to the longer side goes unseen).
-  // The endpoints of a well-formed list are already in order, so the lists' are merged rather
-  // than sorted; a list that is not (a violation the cheap tier reports) is sorted. The
-  // neighbours of the rewritten part are the same intervals in both lists (changedRange
-  // compared them): their ends are taken once.
-  std::vector<double>& ends = ends_;
-  ends.clear();
-  for (const Interval& w : beforeNear) ends.insert(ends.end(), {w.b0, w.b1});
-  const auto afterStart = static_cast<std::ptrdiff_t>(ends.size());
+  // The endpoints of a well-formed list are already in order, so the lists' are merged as the
+  // walk goes, read straight from the intervals; a list that is not (a violation the cheap tier
+  // reports) has its endpoints copied out and sorted. The neighbours of the rewritten part are
+  // the same intervals in both lists (changedRange compared them): their ends are taken once.
   const std::size_t sameFirst = changed.afterLo >= 1 ? 1 : 0;
   const std::size_t sameLast = changed.afterHi < e.after.size() ? 1 : 0;
-  for (const Interval& w : afterNear.subspan(sameFirst, afterNear.size() - sameFirst - sameLast))
-    ends.insert(ends.end(), {w.b0, w.b1});
-  const auto incomingStart = static_cast<std::ptrdiff_t>(ends.size());
-  ends.insert(ends.end(), {e.incoming.b0, e.incoming.b1});
-  const bool inOrder = std::is_sorted(ends.begin(), ends.begin() + afterStart) &&
-                       std::is_sorted(ends.begin() + afterStart, ends.begin() + incomingStart) &&
-                       std::is_sorted(ends.begin() + incomingStart, ends.end());
-  if (inOrder) mergeRuns(ends, afterStart, incomingStart, scratch_);
-  else std::sort(ends.begin(), ends.end());
+  const std::span<const Interval> rewritten =
+      afterNear.subspan(sameFirst, afterNear.size() - sameFirst - sameLast);
+  // (In order as std::is_sorted says of b0, b1, b0, b1, ...: no end below the one before it.)
+  const auto endsInOrder = [](std::span<const Interval> run) {
+    for (std::size_t j = 0; j < run.size(); ++j)
+      if (run[j].b1 < run[j].b0 || (j + 1 < run.size() && run[j + 1].b0 < run[j].b1)) return false;
+    return true;
+  };
+  const bool inOrder = endsInOrder(beforeNear) && endsInOrder(rewritten) && !(e.incoming.b1 < e.incoming.b0);
+  const std::size_t numEnds = 2 * (beforeNear.size() + rewritten.size() + 1);
 
+  const double reachFrom = e.incoming.b0 - tiny, reachTo = e.incoming.b1 + tiny;
+  const auto incomingNear = [&](double x) { return x >= reachFrom && x <= reachTo; };
+  std::vector<double>& xs = samples_;
+  xs.clear();
+
+  // Walks the pieces between the numEnds endpoints, in order: `first`, then what next() gives.
   // Inside a piece where one interval of each list covers the piece with the same function, a
   // sample the incoming interval does not reach even with the slack has the old list's values
   // to the bit: every error the sweep computes there is 0 (see worstPointwiseMinError), so it is
   // not taken. (Most of the rewritten range is such: an old interval the incoming one cut
   // shorter, away from the cut.) Inside a piece the intervals covering a point are those at
   // its midpoint when the lists are in order, which is what this needs.
-  std::ptrdiff_t kBefore = lastStartingBefore(e.before, ends.front());
-  std::ptrdiff_t kAfter = lastStartingBefore(e.after, ends.front());
-  const std::ptrdiff_t numBefore = std::ssize(e.before), numAfter = std::ssize(e.after);
-  const auto sameFunctionOver = [&](double m) {
-    while (kBefore + 1 < numBefore && e.before[kBefore + 1].b0 <= m) ++kBefore;
-    while (kAfter + 1 < numAfter && e.after[kAfter + 1].b0 <= m) ++kAfter;
-    if (!inOrder) return false;
-    const Interval* oldOne = coveringOnly(e.before, kBefore - 1, kBefore + 1, m);
-    const Interval* newOne = coveringOnly(e.after, kAfter - 1, kAfter, m);
-    return oldOne != nullptr && newOne != nullptr && sameFunction(*oldOne, *newOne);
+  const auto walk = [&](double first, auto&& next) {
+    std::ptrdiff_t kBefore = lastStartingBefore(e.before, first);
+    std::ptrdiff_t kAfter = lastStartingBefore(e.after, first);
+    const std::ptrdiff_t numBefore = std::ssize(e.before), numAfter = std::ssize(e.after);
+    const auto sameFunctionOver = [&](double m) {
+      while (kBefore + 1 < numBefore && e.before[kBefore + 1].b0 <= m) ++kBefore;
+      while (kAfter + 1 < numAfter && e.after[kAfter + 1].b0 <= m) ++kAfter;
+      if (!inOrder) return false;
+      const Interval* oldOne = coveringOnly(e.before, kBefore - 1, kBefore + 1, m);
+      const Interval* newOne = coveringOnly(e.after, kAfter - 1, kAfter, m);
+      return oldOne != nullptr && newOne != nullptr && sameFunction(*oldOne, *newOne);
+    };
+    // The uniform samples and the midpoints, merged in order as they are made: a uniform sample
+    // at an endpoint is always taken.
+    double u = nextUniform();
+    double p = first;
+    for (std::size_t i = 1; i < numEnds; ++i) {
+      const double q = next();
+      if (!(q > p)) {
+        p = q;
+        continue;
+      }
+      const double m = 0.5 * (p + q);
+      const bool same = sameFunctionOver(m);
+      for (; u <= p; u = nextUniform()) xs.push_back(u);
+      for (; u < m; u = nextUniform())
+        if (!same || incomingNear(u)) xs.push_back(u);
+      if (!same || incomingNear(m)) xs.push_back(m);
+      for (; u < q; u = nextUniform())
+        if (!same || incomingNear(u)) xs.push_back(u);
+      p = q;
+    }
+    for (; std::isfinite(u); u = nextUniform()) xs.push_back(u);
   };
-  const double reachFrom = e.incoming.b0 - tiny, reachTo = e.incoming.b1 + tiny;
-  const auto incomingNear = [&](double x) { return x >= reachFrom && x <= reachTo; };
 
-  // The uniform samples and the midpoints, merged in order as they are made: a uniform sample at
-  // an endpoint is always taken.
-  std::vector<double>& xs = samples_;
-  xs.clear();
-  double u = nextUniform();
-  for (std::size_t i = 0; i + 1 < ends.size(); ++i) {
-    const double p = ends[i], q = ends[i + 1];
-    if (!(q > p)) continue;
-    const double m = 0.5 * (p + q);
-    const bool same = sameFunctionOver(m);
-    for (; u <= p; u = nextUniform()) xs.push_back(u);
-    for (; u < m; u = nextUniform())
-      if (!same || incomingNear(u)) xs.push_back(u);
-    if (!same || incomingNear(m)) xs.push_back(m);
-    for (; u < q; u = nextUniform())
-      if (!same || incomingNear(u)) xs.push_back(u);
+  if (inOrder) {
+    // The ends of the old list's part merged with the new one's, then with the incoming
+    // interval's, taken one at a time as std::merge would order them (the second run's end
+    // first only when below the first's).
+    std::size_t tb = 0, ta = 0, ti = 0;
+    const std::size_t nb = 2 * beforeNear.size(), na = 2 * rewritten.size();
+    const auto endOf = [](std::span<const Interval> run, std::size_t t) {
+      return (t & 1) != 0 ? run[t >> 1].b1 : run[t >> 1].b0;
+    };
+    const double incomingEnds[] = {e.incoming.b0, e.incoming.b1};
+    const auto next = [&]() -> double {
+      const bool fromB = tb < nb, fromA = ta < na;
+      if (fromB || fromA) {
+        const bool takeA = !fromB || (fromA && endOf(rewritten, ta) < endOf(beforeNear, tb));
+        const double s = takeA ? endOf(rewritten, ta) : endOf(beforeNear, tb);
+        if (ti < 2 && incomingEnds[ti] < s) return incomingEnds[ti++];
+        ++(takeA ? ta : tb);
+        return s;
+      }
+      return incomingEnds[ti++];
+    };
+    walk(next(), next);
+  } else {
+    std::vector<double>& ends = ends_;
+    ends.clear();
+    for (const Interval& w : beforeNear) ends.insert(ends.end(), {w.b0, w.b1});
+    for (const Interval& w : rewritten) ends.insert(ends.end(), {w.b0, w.b1});
+    ends.insert(ends.end(), {e.incoming.b0, e.incoming.b1});
+    std::sort(ends.begin(), ends.end());
+    std::size_t i = 1;
+    walk(ends.front(), [&] { return ends[i++]; });
   }
-  for (; std::isfinite(u); u = nextUniform()) xs.push_back(u);
   return samples_;
 }
 

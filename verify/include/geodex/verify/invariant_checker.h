@@ -104,9 +104,9 @@ class InvariantChecker : public SolverObserver {
   bool throw_;
   std::vector<InvariantTally> tallies_;
   std::unique_ptr<InvariantViolation> first_;
-  // The pointwise-minimum samples, the endpoints they are placed between and a buffer to merge
-  // those, reused between updates.
-  std::vector<double> samples_, ends_, scratch_;
+  // The pointwise-minimum samples and the endpoints of lists out of order (sorted there), reused
+  // between updates.
+  std::vector<double> samples_, ends_;
 };
 
 /// Writes a violation as a text reproducer `geodex repro` reads back (format in docs/fuzzing.md).
