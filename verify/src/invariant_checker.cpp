@@ -229,7 +229,23 @@ void InvariantChecker::onEdgeUpdate(const EdgeUpdateEvent& e) {
 void InvariantChecker::checkWellFormed(const EdgeUpdateEvent& e, std::size_t lo, std::size_t hi) {
   std::string why;
   const std::string broken = checkListRange(e.after, lo, hi, e.edgeLength, why);
-  for (int id = Sorted; id <= RealSource; ++id) record(static_cast<Id>(id), broken != kNames[id], 0.0, why, &e);
+  // The broken invariant's name is looked up once, only when there is one: comparing it with all
+  // seven names at every update was a seventh of the cheap tier's instructions.
+  int brokenId = -1;
+  if (!broken.empty())
+    for (int id = Sorted; id <= RealSource; ++id)
+      if (broken == kNames[id]) brokenId = id;
+  // A pass is tallied in place (as record would: checked, and worst with an error of 0); a call to
+  // record for each of the seven was another sixth.
+  for (int id = Sorted; id <= RealSource; ++id) {
+    if (id == brokenId) {
+      record(static_cast<Id>(id), false, 0.0, why, &e);
+    } else {
+      InvariantTally& t = tallies_[id];
+      ++t.checked;
+      t.worst = std::max(t.worst, 0.0);
+    }
+  }
 }
 
 // Cheap tier: the two neighbours agree at every Eq. 1 breakpoint.
