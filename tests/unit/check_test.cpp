@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "geodex/error.h"
+#include "geodex/verify/exact_predicates.h"
 #include "geodex/verify/mesh_generators.h"
 #include "geodex/verify/repro.h"
 
@@ -125,6 +126,23 @@ TEST(CheckOracles, ExactPredicatesCatchAWrongDecision) {
   // Within a few ε of G2 the exact tree cannot judge the ε decision.
   const LocalWindow nearG2{2.0, Vec2(1.0, 1.0), 0.5, 1.5, Vec2(1e-12, -1.0)};
   EXPECT_FALSE(judgeFig6(nearG2, Fig6Branch::G2, agrees));
+}
+
+// A source on the edge's line (G1) reaches the face through the window only from inside it; from
+// the line beyond either end of the window it reaches nothing (G1 outside), as in
+// propagateLocal. (Its margin is 0: on the line is as close to ambiguity as it gets, so the judge
+// never rules on G1; the exact tree still names the leaf.)
+TEST(CheckOracles, ExactPredicatesPutASourceOnTheEdgeLineInG1InsideOrOutsideTheWindow) {
+  const Vec2 apex(1.0, 1.0);
+  const struct {
+    double x;
+    Fig6Branch leaf;
+  } sources[] = {{1.0, Fig6Branch::G1Inside}, {0.25, Fig6Branch::G1Outside}, {1.75, Fig6Branch::G1Outside}};
+  for (const auto& [x, leaf] : sources) {
+    const LocalWindow w{2.0, apex, 0.5, 1.5, Vec2(x, 0.0)};
+    EXPECT_EQ(std::string(name(exactFig6(w).branch)), name(leaf)) << "source at x = " << x;
+    EXPECT_EQ(std::string(name(propagateLocal(w).branch)), name(leaf)) << "source at x = " << x;
+  }
 }
 
 // The judge's "clearly decided" margin is a ratio of lengths: the same configuration at any

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 #include <vector>
@@ -99,6 +100,32 @@ TEST(Algorithm2, ASliverOfAFarSourceAloneOnItsEdgeIsKeptUntilItsNeighbourArrives
   EXPECT_NEAR(list.distanceAt(2.5e-12), make(0.0, L, source, 0.0).distanceAt(2.5e-12), 1e-12);
 }
 
+// A D1 sliver between a window from far away (its ε 100× the edge's) and a near one goes to the
+// far one, the coarser, even when that one was propagated already and the near one was not:
+// merged into the near one, the sliver's end would stay a sliver's width from the far window's.
+// Here the sliver is what is left of an old window M where a new near window N crosses it 5e-11
+// after M's start.
+TEST(Algorithm2, AD1SliverBetweenAFarAndANearWindowGoesToTheFarOneWhateverTheirStates) {
+  constexpr double delta = 5e-11;
+  Interval far = make(0.0, 5.0, Vec2(-1000.0, 0.5), 0.0);
+  far.markPropagated();
+  const Interval m = make(5.0, kL, Vec2(5.0, 1.0), 1005.0);
+  const double meet = 5.0 + delta;  // where N is to cross M
+  const Interval n = make(5.0, kL, Vec2(8.0, 1.0), m.distanceAt(meet) - std::hypot(8.0 - meet, 1.0));
+  ASSERT_GT(tinyLength(far, kL), 50 * tinyLength(n, kL));
+  ASSERT_LT(far.distanceAt(5.0), m.distanceAt(5.0));  // the far window may take the sliver
+  EdgeIntervals list;
+  EdgeUpdateReport report;
+  std::vector<Interval> scratch;
+  list.assign(std::vector<Interval>{far, m});
+  list.insert(n, kL, report, scratch);
+  EXPECT_EQ(report.degeneracies[DegeneracyKind::D1], 1u);
+  ASSERT_EQ(list.intervals().size(), 2u);
+  EXPECT_EQ(list.intervals()[0].source, far.source);
+  EXPECT_EQ(list.intervals()[1].source, n.source);
+  EXPECT_NEAR(list.intervals()[0].b1, meet, 1e-12) << "the far window grew over the sliver";
+}
+
 // Edge 3-13 of corpus/fuzz_solver/regress/vertex-agreement-d1-pieces-of-a-source-near-a-corner-
 // merged-into-a-far-g1-window, in mesh units: vertex 3's window along the edge (0.364 at x = 0),
 // then a face source's windows in four pieces, two of them shorter than the source's ε (4.4e-12)
@@ -162,7 +189,6 @@ TEST(Algorithm2, ATieBetweenASourceAndASaddleOnItsLineGoesToTheSourceInEitherOrd
     EXPECT_NEAR(e.list.intervals()[0].b1, 0.5, 1e-12) << (saddleFirst ? "saddle first" : "source first");
   }
 }
-
 // Two pseudo-sources on the edge line at or behind its start, the far one reaching the near one
 // straight (σ_near = σ_far + their distance): their distances tie on the whole window, up to
 // rounding, and the far one (σ smaller) keeps it in either order. The near one's window is a
@@ -330,6 +356,30 @@ TEST(Algorithm2, AnIntervalLongerEverywhereLeavesTheListAsItWas) {
   }
 }
 
+TEST(Algorithm2, AnIntervalLongerOnAllItsRangeLeavesTheListAsItWasThoughShorterBeyondIt) {
+  // As above, but the new window's source lies beyond its end, above the edge's end: its
+  // distance function, continued past the window, would be the shorter one there. A window is
+  // its range only; longer on all of it, it changes nothing (no cut, no D1 sliver).
+  Edge1 e;
+  e.insert(make(0.0, 3.0, Vec2(1.5, 1.0), 0.0));
+  e.insert(make(3.0, 6.0, Vec2(4.5, 1.0), 0.0));
+  e.insert(make(6.0, kL, Vec2(8.0, 1.0), 0.0));
+  const std::vector<Interval> before(e.list.intervals().begin(), e.list.intervals().end());
+  const Interval longer = make(3.0 + 0.1 * tol::kTinyIntervalRel * kL, 8.0, Vec2(kL, 0.5), 0.0);
+  for (double x = longer.b0; x <= longer.b1; x += 0.01)
+    ASSERT_GT(longer.distanceAt(x), e.list.distanceAt(x)) << x;
+  ASSERT_LT(longer.distanceAt(kL), e.list.distanceAt(kL));
+  e.insert(longer);
+  EXPECT_FALSE(e.report.incomingSurvived);
+  EXPECT_EQ(e.report.degeneracies.count, DegeneracyCounters{}.count);
+  ASSERT_EQ(e.list.intervals().size(), before.size());
+  for (std::size_t i = 0; i < before.size(); ++i) {
+    EXPECT_EQ(e.list.intervals()[i].b0, before[i].b0);
+    EXPECT_EQ(e.list.intervals()[i].b1, before[i].b1);
+    EXPECT_EQ(e.list.intervals()[i].source, before[i].source);
+  }
+}
+
 TEST(Algorithm2, AnIntervalShorterOnlyInAGapIsKeptThere) {
   // The same longer interval, but the old ones leave a gap wider than ε: there it is the only
   // distance, and it is kept on exactly the gap.
@@ -370,6 +420,64 @@ TEST(Algorithm2, D2RealOverlapGoesToTheShorterInterval) {
   ASSERT_EQ(e.list.intervals().size(), 2u);
   EXPECT_EQ(e.list.intervals()[0].b1, 4.0);
   EXPECT_NEAR(e.list.distanceAt(4.0 - 1e-11), old.distanceAt(4.0 - 1e-11), 1e-15);
+}
+
+// An edge length near kL on which ε (tinyLength: kTinyIntervalRel × the edge length, for sources
+// nearer than it) is a power of two, eps: ends placed eps apart then differ by exactly eps in doubles.
+double edgeWithDyadicEpsilon(double& eps) {
+  eps = std::exp2(std::round(std::log2(tol::kTinyIntervalRel * kL)));
+  double L = eps / tol::kTinyIntervalRel;
+  while (tol::kTinyIntervalRel * L < eps) L = std::nextafter(L, INFINITY);
+  while (tol::kTinyIntervalRel * L > eps) L = std::nextafter(L, 0.0);
+  return L;
+}
+
+TEST(Algorithm2, AnOverlapOfExactlyEpsilonAtTheNewStartIsARealOverlapSplitByEq1) {
+  // D2 is an overlap shorter than ε (the larger of the two intervals' ε); one of exactly ε is
+  // real and step 2 splits it by Eq. 1. Here the old interval is shorter on all of it (the
+  // bisector lies ε past its end) and keeps it whole. Met at the midpoint as a D2 (the two agree
+  // there to kContinuityRel), the longer incoming distance would take half of it.
+  double eps = 0.0;
+  const double L = edgeWithDyadicEpsilon(eps);
+  const Interval old = make(0.0, 5.0, Vec2(2.0 + eps, 1.0), 0.0);
+  const Interval in = make(5.0 - eps, L, Vec2(8.0 + eps, 1.0), 0.0);
+  ASSERT_EQ(std::max(tinyLength(old, L), tinyLength(in, L)), eps);
+  ASSERT_EQ(old.b1 - in.b0, eps);
+  EdgeIntervals list;
+  EdgeUpdateReport report;
+  std::vector<Interval> scratch;
+  list.insert(old, L, report, scratch);
+  list.insert(in, L, report, scratch);
+  EXPECT_EQ(report.degeneracies[DegeneracyKind::D2], 0u);
+  ASSERT_EQ(list.intervals().size(), 2u);
+  EXPECT_EQ(list.intervals()[0].b1, 5.0);
+  EXPECT_EQ(list.intervals()[1].b0, 5.0);
+  const double x = 5.0 - eps / 4;  // in the half a midpoint would give away
+  ASSERT_LT(old.distanceAt(x), in.distanceAt(x));
+  EXPECT_EQ(list.distanceAt(x), old.distanceAt(x));
+}
+
+TEST(Algorithm2, AnOverlapOfExactlyEpsilonAtTheNewEndIsARealOverlapSplitByEq1) {
+  // The mirror image of the case above: the old interval starts exactly ε before the incoming
+  // one ends, and is shorter on all of the overlap.
+  double eps = 0.0;
+  const double L = edgeWithDyadicEpsilon(eps);
+  const Interval old = make(5.0, L, Vec2(8.0 - eps, 1.0), 0.0);
+  const Interval in = make(0.0, 5.0 + eps, Vec2(2.0 - eps, 1.0), 0.0);
+  ASSERT_EQ(std::max(tinyLength(old, L), tinyLength(in, L)), eps);
+  ASSERT_EQ(in.b1 - old.b0, eps);
+  EdgeIntervals list;
+  EdgeUpdateReport report;
+  std::vector<Interval> scratch;
+  list.insert(old, L, report, scratch);
+  list.insert(in, L, report, scratch);
+  EXPECT_EQ(report.degeneracies[DegeneracyKind::D2], 0u);
+  ASSERT_EQ(list.intervals().size(), 2u);
+  EXPECT_EQ(list.intervals()[0].b1, 5.0);
+  EXPECT_EQ(list.intervals()[1].b0, 5.0);
+  const double x = 5.0 + eps / 4;
+  ASSERT_LT(old.distanceAt(x), in.distanceAt(x));
+  EXPECT_EQ(list.distanceAt(x), old.distanceAt(x));
 }
 
 TEST(Algorithm2, AnEq1BreakpointAtARemovedSliverIsNoLongerABreakpoint) {
@@ -582,6 +690,33 @@ TEST(Algorithm2, SameSourceArrivingAgainKeepsTheOldAndItsPropagation) {
   ASSERT_EQ(e.list.intervals().size(), 1u);
   EXPECT_TRUE(e.list.intervals()[0].fullyPropagated());
   EXPECT_TRUE(e.toQueue().empty());
+}
+
+TEST(Algorithm2, APendingIntervalTrimmedAwayFromItsNearestPointKeepsItsQueueEntry) {
+  // A pending interval's queue key is its smallest distance, which a trim elsewhere leaves where
+  // it was (the distance along an edge is convex): the solver keeps its entry and queues only
+  // the new piece. At the old interval's end and, mirrored, at its start.
+  struct Case {
+    Interval old, in;
+    double newB0;
+  };
+  const Case cases[] = {{make(0.0, kL, Vec2(2.0, 1.0), 0.0), make(8.0, kL, Vec2(9.0, 0.5), 0.0), 8.0},
+                        {make(0.0, kL, Vec2(8.0, 1.0), 0.0), make(0.0, 2.0, Vec2(1.0, 0.5), 0.0), 0.0}};
+  for (const Case& c : cases) {
+    EdgeIntervals list;
+    EdgeUpdateReport report;
+    std::vector<Interval> scratch;
+    list.assign(std::vector<Interval>{c.old});  // as the solver leaves it: queued, pending
+    list.insert(c.in, kL, report, scratch);
+    ASSERT_EQ(list.intervals().size(), 2u);
+    std::vector<Interval> queued;
+    for (std::size_t i = report.first; i < report.last; ++i)
+      if ((list.intervals()[i].flags & Interval::kChanged) && list.intervals()[i].pending())
+        queued.push_back(list.intervals()[i]);
+    ASSERT_EQ(queued.size(), 1u) << "new piece from " << c.newB0;
+    EXPECT_EQ(queued[0].b0, c.newB0);
+    EXPECT_EQ(queued[0].source, c.in.source);
+  }
 }
 
 TEST(Algorithm2, SameSourceNeighboursInDifferentPropagationStatesStaySeparate) {

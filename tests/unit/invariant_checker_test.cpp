@@ -139,6 +139,21 @@ TEST(InvariantChecker, IgnoringABetterIncomingIntervalFails) {
   EXPECT_EQ(violatedBy(u), "pointwise-min");
 }
 
+// The incoming window is shorter than the old one only on a stretch around its source's foot, at
+// neither end of the edge nor at its middle, where the old one wins: the full tier samples the
+// whole range the incoming interval reaches, so ignoring it fails on either half of the edge.
+TEST(InvariantChecker, IgnoringAnIncomingIntervalBetterOnlyInsideOneHalfOfTheEdgeFails) {
+  for (const double foot : {2.5, kL - 2.5}) {
+    Update u;
+    u.before = {make(0, kL, Vec2(foot, 3), 0.0)};
+    u.incoming = make(0, kL, Vec2(foot, 0.5), 2.0);  // shorter by 0.5 at the foot, longer at 0, L/2, L
+    ASSERT_LT(u.incoming.distanceAt(foot), u.before[0].distanceAt(foot));
+    for (const double x : {0.0, kL / 2, kL}) ASSERT_GT(u.incoming.distanceAt(x), u.before[0].distanceAt(x));
+    u.after = u.before;
+    EXPECT_EQ(violatedBy(u), "pointwise-min") << "source above " << foot;
+  }
+}
+
 TEST(InvariantChecker, LosingCoverageFails) {
   Update u;
   u.before = {make(0, kL, Vec2(5, 3), 1.0)};
@@ -265,6 +280,29 @@ TEST(InvariantChecker, AWindowLeftPendingWithAFaceToCrossFailsAtTheEnd) {
     // A solve stopped early may leave windows pending.
     EXPECT_NO_THROW(checker.checkFinal(mesh, withOnePending(false), d, solver.sources(), false));
   }
+}
+
+// Not throwing (geodex check, the bench), the checker counts every violation and keeps the first
+// one whole, with the update that made it, for the report: that one names where the solve first
+// went wrong, and what came after may only be its consequence.
+TEST(InvariantChecker, ACheckerThatDoesNotThrowKeepsTheFirstViolationForTheReport) {
+  Update first;
+  first.before = {make(0, kL, Vec2(5, 3), 1.0)};
+  first.incoming = make(2, 8, Vec2(5, 1), 0.0);  // shorter everywhere on [2, 8], and ignored
+  first.after = first.before;
+  Update second = first;
+  second.after[0].sigma = -1.0;
+  InvariantChecker checker(CheckLevel::Full, /*throwOnViolation=*/false);
+  EXPECT_EQ(checker.firstViolation(), nullptr);
+  EXPECT_NO_THROW(checker.onEdgeUpdate(first.event()));
+  EXPECT_NO_THROW(checker.onEdgeUpdate(second.event()));
+  EXPECT_GE(checker.violations(), 2u);
+  const InvariantViolation* v = checker.firstViolation();
+  ASSERT_NE(v, nullptr);
+  EXPECT_EQ(v->invariant(), "pointwise-min");
+  EXPECT_EQ(v->edgeLength, kL);
+  EXPECT_EQ(v->incoming.b0, 2.0);
+  EXPECT_EQ(v->after.size(), 1u);
 }
 
 TEST(InvariantChecker, ReproducerNamesTheInvariant) {

@@ -347,6 +347,15 @@ TEST(BoundChecks, LipschitzFailsOnAJump) {
   EXPECT_FALSE(checkLipschitz(f.soup, d, 1e-9).ok());
 }
 
+TEST(BoundChecks, LipschitzRefusesAFieldOfAnotherMesh) {
+  // A field with a value more than the mesh has vertices belongs to another mesh: refused, as by
+  // the other checks, rather than judged on the vertices the two happen to share.
+  const Fields f;
+  std::vector<double> d = f.euclid;
+  d.push_back(0.0);
+  EXPECT_THROW(checkLipschitz(f.soup, d, 1e-9), std::invalid_argument);
+}
+
 TEST(BoundChecks, SymmetryAndAgreementFail) {
   EXPECT_FALSE(checkSymmetry(1.0, 1.001, 1e-9).ok());
   EXPECT_FALSE(checkSymmetry(1.0, kInf, 1e-9).ok());
