@@ -3,7 +3,8 @@
 catches it. Not part of ./test.sh; it runs in its own git worktree and never touches the checkout.
 
   scripts/mutate.sh [--list] [--only ID,...] [--max N] [--seed S] [--worktree DIR]
-                    [--results FILE] [--report FILE] [--no-debug]
+                    [--results FILE] [--report FILE] [--no-debug] [--commit REV]
+                    [--tests-patch FILE]
 
 The mutants are made by operators that look like real geometry bugs, at sites found in the
 source (a fixed, seeded choice, so a run is reproducible and can be resumed):
@@ -19,8 +20,8 @@ source (a fixed, seeded choice, so a run is reproducible and can be resumed):
   end-to-edge-end     a computed end (b0 = ..., b1 = ...) replaced with the edge's end
 
 Each mutant is built with the release preset and tested in order of cost, stopping at the first
-failure: the unit tests, the properties (CI's seed), then the whole release ctest (which replays
-the corpus). A mutant the release tests miss is built and tested with the debug preset (checks
+failure: the unit tests, the properties (CI's seed), then the rest of the release ctest (the
+corpus replay and every other test but those two, already run). A mutant the release tests miss is built and tested with the debug preset (checks
 on). A mutant that does not compile is reported as such and left out of the score.
 
 Results go to FILE (default build/mutation/results.jsonl, one JSON object per mutant, reused: a
@@ -37,6 +38,7 @@ import os
 import random
 import re
 import shutil
+import signal
 import subprocess
 import sys
 import time
@@ -139,8 +141,17 @@ def tolerance_sites(text):
     return out
 
 
-def catalogue(seed):
-    """Every mutant of this run: all tolerance mutants, a seeded sample of the other sites."""
+def source_at(rev, path):
+    """A file's text at a commit. The mutants are planted in a worktree of HEAD, so the sites are
+    found in HEAD's text too, never in the checkout's (which may hold someone's unfinished edits:
+    other lines, another sample, and mutants whose line the worktree does not have)."""
+    return subprocess.run(["git", "show", "%s:%s" % (rev, path)], cwd=ROOT, stdout=subprocess.PIPE, text=True,
+                          check=True).stdout
+
+
+def catalogue(seed, rev):
+    """Every mutant of this run (sites in the commit rev): all tolerance mutants, a seeded sample
+    of the other sites."""
     rng = random.Random(seed)
     mutants = []
 
@@ -168,10 +179,8 @@ def catalogue(seed):
              "verify/src/invariant_checker.cpp": 12, "verify/src/oracles.cpp": 6,
              "verify/src/exact_predicates.cpp": 4}
     for path in SOLVER_FILES + VERIFY_FILES:
-        with open(os.path.join(ROOT, path)) as f:
-            add(path, sites(path, f.read()), quota.get(path, 2))
-    with open(os.path.join(ROOT, TOLERANCE_FILE)) as f:
-        tol = tolerance_sites(f.read())
+        add(path, sites(path, source_at(rev, path)), quota.get(path, 2))
+    tol = tolerance_sites(source_at(rev, TOLERANCE_FILE))
     add(TOLERANCE_FILE, tol, len(tol))
     return mutants
 
@@ -192,21 +201,57 @@ def run(cmd, cwd, timeout, log):
 
 
 def first_failure(output):
-    """The name of the first failing test in gtest or ctest output."""
-    for pattern in (r"\[  FAILED  \] (\S+) \(", r"^\s*\d+ - (\S+) \(Failed|Timeout|Subprocess", r"\[  FAILED  \] (\S+)"):
-        m = re.search(pattern, output, re.M)
-        if m:
-            return m.group(1)
+    """The name of the first failing test in gtest or ctest output, or "?"."""
+    m = re.search(r"^\[  FAILED  \] (\S+) \(", output, re.M)
+    if m:
+        return m.group(1)
+    # CTest's summary: "  12 - name (Failed)", "(Subprocess aborted)", "(SEGFAULT)", "(Timeout)", ...
+    # (the alternatives grouped: an ungrouped "(Failed|Timeout" made "Timeout" alone a match, with
+    # no name in it).
+    m = re.search(r"^\s*\d+ - (\S+) \((?:Failed|Timeout|Subprocess aborted|SEGFAULT|ILLEGAL|NUMERICAL|"
+                  r"BUS_ERROR|INTERRUPT|OTHER_FAULT|CHILDKILLED|Not Run|Exception)[^)]*\)", output, re.M)
+    if m:
+        return m.group(1)
+    m = re.search(r"^\[  FAILED  \] (\S+)", output, re.M)
+    if m:
+        return m.group(1)
     return "?"
+
+
+def unfinished_test(output):
+    """The gtest test that started and never ended: a crash (a floating-point trap in the debug
+    build, an abort) kills the binary before it prints [  FAILED  ]. Needs the output without
+    --gtest_brief, where every test's [ RUN      ] line is printed and flushed before it runs."""
+    started = re.findall(r"^\[ RUN      \] (\S+)", output, re.M)
+    ended = set(re.findall(r"^\[ +(?:OK|FAILED|SKIPPED) +\] (\S+) \(", output, re.M))
+    for name in reversed(started):
+        if name not in ended:
+            return name
+    return None
+
+
+def signal_name(code):
+    """ "SIGFPE" for an exit code of -8 (subprocess's way of saying killed by a signal), else None."""
+    if code >= 0:
+        return None
+    try:
+        return signal.Signals(-code).name
+    except ValueError:
+        return "signal %d" % -code
 
 
 def test_preset(work, preset, log):
     """(killed?, by what) for the current source in the worktree."""
     bindir = os.path.join(work, "build", preset, "bin")
     stages = [
-        ("unit", [os.path.join(bindir, "geodex_unit_tests"), "--gtest_brief=1"], 600),
+        ("unit", [os.path.join(bindir, "geodex_unit_tests"), "--gtest_brief=1"], 120),
         ("property", [os.path.join(bindir, "geodex_property_tests"), "--gtest_brief=1"], 1200),
-        ("ctest", ["ctest", "--preset", preset, "-j2", "--timeout", "600", "--stop-on-failure"], 3600),
+        # The rest of ctest (the corpus replay, CLI, scale, ...): not the unit tests and the
+        # properties again, which the two stages above have just run (the same binaries, the
+        # same seed, the coverage gate judging); the properties alone are 40 s in release and
+        # 160 s in debug, the longest part of a survivor's run.
+        ("ctest", ["ctest", "--preset", preset, "-j2", "--timeout", "600", "--stop-on-failure",
+                   "-LE", "^unit$", "-E", "^property$"], 3600),
     ]
     env_rc = os.environ.get("RC_PARAMS")
     os.environ["RC_PARAMS"] = "seed=12345 max_success=200 noshrink=1"
@@ -218,7 +263,21 @@ def test_preset(work, preset, log):
             if code == 124:
                 return True, "%s (%s): timeout" % (preset, name)
             if code != 0:
-                return True, "%s: %s" % (preset, first_failure(out))
+                by = first_failure(out)
+                if by == "?" and name != "ctest":
+                    # The binary died without naming a test (with --gtest_brief only failures are
+                    # printed, and a trap or abort leaves nothing): run it again unbriefed, where
+                    # the last test started and never ended is the one that killed it.
+                    code2, out2 = run([c for c in cmd if c != "--gtest_brief=1"], work, timeout, log)
+                    crashed = unfinished_test(out2)
+                    how = signal_name(code2) or signal_name(code)
+                    if crashed:
+                        by = "%s (%s)" % (crashed, how) if how else crashed
+                    else:
+                        by = first_failure(out2)
+                # (A signal after a test already failed belongs to a later test: the failed one is
+                # named, as the first failure.)
+                return True, "%s: %s" % (preset, by)
         return False, ""
     finally:
         if env_rc is None:
@@ -261,7 +320,7 @@ def load_equivalents(path):
         return json.load(f)
 
 
-def report(mutants, results, path, seed, equivalents):
+def report(mutants, results, path, seed, equivalents, commit):
     rows = []
     counts = {}
     for m in mutants:
@@ -273,16 +332,20 @@ def report(mutants, results, path, seed, equivalents):
             r = dict(r, by=evidence)
         counts[verdict] = counts.get(verdict, 0) + 1
         change = "`%s` → `%s`" % (code_part(m["before"]).strip()[:70], code_part(m["after"]).strip()[:70])
+        by = (r or {}).get("by", "")
+        if (r or {}).get("tests") == "patch" and verdict == "killed":
+            by += " (a new test, in --tests-patch: not in %s)" % (r or {}).get("commit", "")[:7]
         rows.append("| %s | %s:%d | %s | %s | %s | %s |" % (
             m["id"].rsplit(":", 1)[1], m["file"], m["line"], m["operator"], change.replace("|", "\\|"),
-            verdict, (r or {}).get("by", "").replace("|", "\\|")))
+            verdict, by.replace("|", "\\|")))
     scored = counts.get("killed", 0) + counts.get("survived", 0)
     with open(path, "w") as f:
         f.write("# Mutation testing\n\n")
-        f.write("Made by `scripts/mutate.sh --seed %d` (scripts/mutate.py says how). One planted bug at a time, "
+        f.write("Made by `scripts/mutate.sh --seed %d --commit %s` (scripts/mutate.py says how): the mutants "
+                "of commit %s. One planted bug at a time, "
                 "in its own git worktree: built with the release preset and tested (unit tests, properties with "
-                "CI's seed, then the whole release ctest with the corpus replay), and when those miss it, with the "
-                "debug preset (checks on).\n\n" % seed)
+                "CI's seed, then the rest of the release ctest with the corpus replay), and when those miss it, with the "
+                "debug preset (checks on).\n\n" % (seed, commit[:7], commit[:7]))
         f.write("Killed %d of %d scored mutants (%.1f %%); %d argued equivalent "
                 "(scripts/mutation-equivalents.json: the evidence is in the last column); %d did not "
                 "compile; %d not run yet.\n\n" % (
@@ -302,9 +365,21 @@ def main():
     ap.add_argument("--results", default=os.path.join(ROOT, "build", "mutation", "results.jsonl"))
     ap.add_argument("--report", default=os.path.join(ROOT, "docs", "mutation.md"))
     ap.add_argument("--no-debug", action="store_true", help="release tests only")
+    ap.add_argument("--tests-patch", metavar="FILE",
+                    help="apply this patch to the commit's tests/ first (new tests not committed yet, "
+                         "from `git diff HEAD -- tests`)")
+    ap.add_argument("--commit", default="HEAD",
+                    help="the commit whose source is mutated (default HEAD): a run resumed in several "
+                         "invocations names the one it started on, so that commits made meanwhile do "
+                         "not change its catalogue")
     a = ap.parse_args()
+    # `kill -TERM` stops a run cleanly: the mutant being tested is put back in the worktree (the
+    # finally of mutate_one) and left out of the results, to be run next time.
+    signal.signal(signal.SIGTERM, lambda signum, frame: sys.exit("stopped by SIGTERM"))
 
-    mutants = catalogue(a.seed)
+    head = subprocess.run(["git", "rev-parse", a.commit], cwd=ROOT, stdout=subprocess.PIPE, text=True,
+                          check=True).stdout.strip()
+    mutants = catalogue(a.seed, head)
     if a.list:
         for m in mutants:
             print("%s\n  - %s\n  + %s" % (m["id"], m["before"].strip(), m["after"].strip()))
@@ -326,11 +401,19 @@ def main():
         todo = todo[:a.max]
 
     if todo:
-        head = subprocess.run(["git", "rev-parse", "HEAD"], cwd=ROOT, stdout=subprocess.PIPE, text=True,
-                              check=True).stdout.strip()
         if not os.path.isdir(a.worktree):
             subprocess.run(["git", "worktree", "add", "--detach", a.worktree, head], cwd=ROOT, check=True)
         subprocess.run(["git", "checkout", "--detach", head], cwd=a.worktree, check=True)
+        # The worktree's tests are the commit's, plus a patch when one is given (tests written for
+        # survivors and not committed yet: `git diff HEAD -- tests`; the mutant is then re-run
+        # against them). Not the checkout's tests/ as it is: tests committed after the commit may
+        # test what the commit does not have yet, and would fail with or without the mutant.
+        subprocess.run(["git", "checkout", head, "--", "tests"], cwd=a.worktree, check=True)
+        subprocess.run(["git", "clean", "-fdq", "--", "tests"], cwd=a.worktree, check=True)
+        if a.tests_patch:
+            with open(a.tests_patch) as f:
+                subprocess.run(["patch", "-p1", "-F3", "--no-backup-if-mismatch", "-s"], cwd=a.worktree,
+                               stdin=f, check=True)
         shared = os.path.join(os.path.dirname(a.worktree), "shared")
         if not os.path.exists(shared) and os.path.isdir(os.path.join(os.path.dirname(ROOT), "shared")):
             os.symlink(os.path.join(os.path.dirname(ROOT), "shared"), shared)
@@ -349,13 +432,15 @@ def main():
                 f.write("\n=== %s\n- %s\n+ %s\n" % (m["id"], m["before"], m["after"]))
             r = mutate_one(a.worktree, m, presets, log)
             r.update({"id": m["id"], "seconds": round(time.time() - start, 1), "commit": head})
+            if a.tests_patch:
+                r["tests"] = "patch"
             results[m["id"]] = r
             with open(a.results, "a") as f:
                 f.write(json.dumps(r) + "\n")
             sys.stderr.write("%s %s (%.0f s)\n" % (r["verdict"], r["by"], r["seconds"]))
     equivalents = load_equivalents(os.path.join(ROOT, "scripts", "mutation-equivalents.json"))
-    report(catalogue(a.seed), results, a.report, a.seed, equivalents)
-    survived = [m["id"] for m in catalogue(a.seed) if results.get(m["id"], {}).get("verdict") == "survived"
+    report(catalogue(a.seed, head), results, a.report, a.seed, equivalents, head)
+    survived = [m["id"] for m in catalogue(a.seed, head) if results.get(m["id"], {}).get("verdict") == "survived"
                 and m["id"].rsplit(":", 1)[1] not in equivalents]
     print("report: %s; survivors: %s" % (a.report, ", ".join(survived) or "none"))
     return 0
