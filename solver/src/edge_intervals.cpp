@@ -541,9 +541,6 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
     // the piece could not (corpus/fuzz_edge_update/regress/no-tiny-interval-step-5-merge-makes-a-
     // sliver-takeable-after-step-3). Each pass sews or resolves what it finds for good, and steps
     // 3 and 5 only remove, so this ends.
-    // Whether step 3 found a sliver at an end of the slice that the outer neighbour there may
-    // take: only the wider slice lets it grow (see below).
-    bool outerPrevTakes = false, outerNextTakes = false;
     for (bool again = true; again;) {
       again = false;
       // --- Step 3: remove tiny intervals (D1), merging each into a neighbour that may grow over
@@ -591,8 +588,6 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
             ++w;
             continue;
           }
-          if (w == 0 && prevTakes) outerPrevTakes = true;
-          if (r + 1 == m && nextTakes) outerNextTakes = true;
           removed = true;
           ++report.degeneracies[DegeneracyKind::D1];
           const Interval t = L[r];
@@ -709,17 +704,18 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
     // The outer neighbour's relation to the slice's first interval (a gap to sew, a sliver to
     // take, a source to merge with) depends on that interval's start, function and state only:
     // where steps 3–5 moved only its inner end, a wider slice finds nothing more. (One in eight of
-    // bunny00's updates was done twice when any change to it widened the slice.)
+    // bunny00's updates was done twice when any change to it widened the slice.) The function
+    // tells the start too: the first interval is list_[s0] whole at first, and only step 3 moves
+    // its start, by removing it; what is first then is another interval, with another function or
+    // state (one with the same, beside it, would have taken the sliver, or been merged with it by
+    // step 5 before). Algorithm2.AGapBesideTheUpdateIsSewnWhenTheIntervalNextToItGoesToACoarser
+    // Window is the case where the wider slice matters.
     const auto sameFunction = [](const Interval& a, const Interval& b) {
       return a.source == b.source && a.sigma == b.sigma && a.side == b.side &&
              a.origin == b.origin && a.pending() == b.pending();
     };
-    const bool frontKept =
-        s0 == 0 || (m > 0 && !outerPrevTakes && out.front().b0 == list_[s0].b0 &&
-                    sameFunction(out.front(), list_[s0]));
-    const bool backKept =
-        s1 == n || (m > 0 && !outerNextTakes && out[m - 1].b1 == list_[s1 - 1].b1 &&
-                    sameFunction(out[m - 1], list_[s1 - 1]));
+    const bool frontKept = s0 == 0 || (m > 0 && sameFunction(out.front(), list_[s0]));
+    const bool backKept = s1 == n || (m > 0 && sameFunction(out[m - 1], list_[s1 - 1]));
     if (frontKept && backKept) break;
     if (!frontKept) s0 = s0 >= 2 ? s0 - 2 : 0;
     if (!backKept) s1 = std::min(n, s1 + 2);

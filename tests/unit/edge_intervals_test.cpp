@@ -780,6 +780,50 @@ TEST(Algorithm2, AnUpdateRewritesOnlyTheSliceItReaches) {
   EXPECT_NEAR(list.distanceAt(20.5), 1.1, 1e-15);
 }
 
+// The list seen from the edge's other end: what Algorithm 2 does at an interval's start it must do
+// at the end of the mirrored one.
+Interval mirrored(const Interval& w, double edgeLength) {
+  Interval m = w;
+  m.b0 = edgeLength - w.b1;
+  m.b1 = edgeLength - w.b0;
+  m.source.x() = edgeLength - w.source.x();
+  return m;
+}
+
+TEST(Algorithm2, AGapBesideTheUpdateIsSewnWhenTheIntervalNextToItGoesToACoarserWindow) {
+  // Near windows A and t with a gap of 2e-10 between them (above ε = 1e-10 of the edge: a real
+  // gap), t 1e-9 long and C after it; distances about 1e6 (pseudo-sources reached from far away).
+  // A far window X (source 1e6 away, ray ends good to 1e-8) replaces C: beside it t is a D1 sliver
+  // of X's rounding and goes to X, and the gap between A and what is now X is below X's sewing
+  // length. A lies outside the range X reaches, so only an update that looks one interval further
+  // out after t is gone sews it. From either end of the edge.
+  const double delta = 1e-9, gap = 2e-10, x1 = 5.0 + delta;
+  const Vec2 sX(5.0, 1e6), sC(5.0, 1.0), sT(5.0, 2.0), sA(2.0, 1.0);
+  const double dX1 = (Vec2(x1, 0.0) - sX).norm();
+  const double sigmaC = dX1 - (Vec2(x1, 0.0) - sC).norm();
+  const double sigmaT = dX1 - (Vec2(x1, 0.0) - sT).norm();
+  const double sigmaA = sigmaT + (Vec2(5.0, 0.0) - sT).norm() - (Vec2(5.0, 0.0) - sA).norm();
+  const Interval a = make(0.0, 5.0 - gap, sA, sigmaA), t = make(5.0, x1, sT, sigmaT),
+                 c = make(x1, kL, sC, sigmaC), x = make(x1, kL, sX, 0.0);
+  for (const bool mirror : {false, true}) {
+    SCOPED_TRACE(mirror ? "mirrored" : "as built");
+    const auto side = [&](const Interval& w) { return mirror ? mirrored(w, kL) : w; };
+    std::vector<Interval> before{side(a), side(t), side(c)};
+    if (mirror) std::reverse(before.begin(), before.end());
+    Edge1 e;
+    e.list.assign(before);
+    e.insert(side(x));
+    expectWellFormed(e.list);
+    const auto after = e.list.intervals();
+    ASSERT_EQ(after.size(), 2u);
+    const Interval& far = after[mirror ? 0 : 1];
+    EXPECT_EQ(far.source, side(x).source) << "X took t";
+    EXPECT_EQ(e.total[DegeneracyKind::D1], 1u);
+    EXPECT_EQ(e.total[DegeneracyKind::D3], 1u);
+    expectPointwiseMin(e.list, {side(a), side(t), side(c), side(x)}, 0.0, kL);
+  }
+}
+
 TEST(Algorithm2, ShadowsLeftWhenTheWavefrontHasPassedAreClosedAtTheirMidpoints) {
   // Three intervals of one source with gaps of 1e-9 and 1e-6 between them (edge 10, distances
   // about 3 there): with a widest closable gap of 1e-8, the first closes at its midpoint, the

@@ -499,6 +499,16 @@ std::vector<Seed> edgeUpdateSeeds() {
                {iv(zero, n(4), n(2), n(2), zero), iv(n(8), n(4), n(14), n(2), zero)},
                iv(n(4).nudged(-3, Nudge::TinyInterval, true), n(12).nudged(-3, Nudge::TinyInterval, true), n(6),
                   n(2), zero)),
+    // A near window next to a real gap (2e-10, above ε = 1e-10) becomes a D1 sliver of a far
+    // window's ray end (1e6 away: 1e-8) when that window replaces its other neighbour, and goes
+    // to it; the gap, now beside the far window, is below its sewing length and is sewn (D3),
+    // though it lies outside the range the incoming interval reaches
+    // (Algorithm2.AGapBesideTheUpdateIsSewnWhenTheIntervalNextToItGoesToACoarserWindow).
+    edgeUpdate("D1-D3-sliver-beside-the-update-goes-to-a-far-window-and-its-gap-is-sewn", {K::D1, K::D3}, 10,
+               {iv(zero, Q::exact(5.0 - 2e-10), n(2), n(1), Q::exact(999996.8377223398).times8(6)),
+                iv(Q::exact(2e-10), Q::exact(1e-9), n(5), n(2), Q::exact(999998.0).times8(6)),
+                iv(zero, n(10), n(5), n(1), Q::exact(999999.0).times8(6))},
+               iv(Q::exact(5.0 + 1e-9), n(10), n(5), Q::exact(1e6).times8(6), zero)),
     // Algorithm 2 without degeneracies, for contrast and for the fuzzer to mutate from.
     edgeUpdate("empty-list-whole-edge", {}, 16, {}, iv(n(0), n(16), n(8), n(4), zero)),
     edgeUpdate("incoming-wins-everywhere", {}, 16, {iv(zero, n(16), n(8), n(8), n(4), kPropagated)},
