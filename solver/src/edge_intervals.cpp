@@ -704,18 +704,21 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
     // The outer neighbour's relation to the slice's first interval (a gap to sew, a sliver to
     // take, a source to merge with) depends on that interval's start, function and state only:
     // where steps 3–5 moved only its inner end, a wider slice finds nothing more. (One in eight of
-    // bunny00's updates was done twice when any change to it widened the slice.) The function
-    // tells the start too: the first interval is list_[s0] whole at first, and only step 3 moves
-    // its start, by removing it; what is first then is another interval, with another function or
-    // state (one with the same, beside it, would have taken the sliver, or been merged with it by
-    // step 5 before). Algorithm2.AGapBesideTheUpdateIsSewnWhenTheIntervalNextToItGoesToACoarser
-    // Window is the case where the wider slice matters.
+    // bunny00's updates was done twice when any change to it widened the slice.) The start moves
+    // when step 3 removes the first interval; the function alone does not tell it, for the next
+    // one may have the same source behind a gap (corpus/fuzz_edge_update/regress/pointwise-min-
+    // sliver-taken-by-the-outer-neighbour-before-a-gap-to-the-same-source). A sliver the outer
+    // neighbour takes moves the start too; one an inner neighbour takes changes the function
+    // (Algorithm2.AGapBesideTheUpdateIsSewnWhenTheIntervalNextToItGoesToACoarserWindow).
     const auto sameFunction = [](const Interval& a, const Interval& b) {
       return a.source == b.source && a.sigma == b.sigma && a.side == b.side &&
              a.origin == b.origin && a.pending() == b.pending();
     };
-    const bool frontKept = s0 == 0 || (m > 0 && sameFunction(out.front(), list_[s0]));
-    const bool backKept = s1 == n || (m > 0 && sameFunction(out[m - 1], list_[s1 - 1]));
+    const bool frontKept =
+        s0 == 0 || (m > 0 && out.front().b0 == list_[s0].b0 && sameFunction(out.front(), list_[s0]));
+    const bool backKept =
+        s1 == n ||
+        (m > 0 && out[m - 1].b1 == list_[s1 - 1].b1 && sameFunction(out[m - 1], list_[s1 - 1]));
     if (frontKept && backKept) break;
     if (!frontKept) s0 = s0 >= 2 ? s0 - 2 : 0;
     if (!backKept) s1 = std::min(n, s1 + 2);

@@ -824,6 +824,34 @@ TEST(Algorithm2, AGapBesideTheUpdateIsSewnWhenTheIntervalNextToItGoesToACoarserW
   }
 }
 
+TEST(Algorithm2, ASliverTheNeighbourOutsideTheUpdateTakesIsNotLostWhenTheSameSourceFollows) {
+  // Near windows A and t meet at 5; t (1e-9 long) and U, further on, are one source and state,
+  // 1e-9 apart (a real gap, above ε = 1e-10). A far window X (source 1e6 away, ray ends good to
+  // 1e-8, everywhere longer than t and U) arrives from 5e-10 past t's end: beside it t is a D1
+  // sliver only A may take, and X's piece of the gap a sliver that U takes, growing back to X's
+  // start. What is now first after A has t's function but not t's start, and only an update one
+  // interval further out lets A grow over t
+  // (corpus/fuzz_edge_update/regress/pointwise-min-sliver-taken-by-the-outer-neighbour-before-a-
+  // gap-to-the-same-source). Not mirrored: step 3 goes through the slice from its start, and
+  // from the other end X's piece goes to U before t is looked at, when t is no sliver any more.
+  const double delta = 1e-9, eta = 5e-10, uStart = 5.0 + delta + 2.0 * eta;
+  const Vec2 sA(2.0, 1.0), sS(5.0, 2.0), sX(5.0, 1e6);
+  const double sigmaS = 1e6 - 10.0;
+  const double sigmaA = sigmaS + (Vec2(5.0, 0.0) - sS).norm() - (Vec2(5.0, 0.0) - sA).norm();
+  const Interval a = make(0.0, 5.0, sA, sigmaA), t = make(5.0, 5.0 + delta, sS, sigmaS),
+                 u = make(uStart, kL, sS, sigmaS), x = make(5.0 + delta + eta, kL, sX, 0.0);
+  Edge1 e;
+  e.list.assign({a, t, u});
+  e.insert(x);
+  expectWellFormed(e.list);
+  const auto after = e.list.intervals();
+  ASSERT_EQ(after.size(), 2u);
+  EXPECT_EQ(after[0].source, sA) << "A took t and X's piece of the gap";
+  EXPECT_EQ(after[1].source, sS);
+  EXPECT_EQ(e.total[DegeneracyKind::D1], 2u);
+  expectPointwiseMin(e.list, {a, t, u, x}, 0.0, kL);
+}
+
 TEST(Algorithm2, ShadowsLeftWhenTheWavefrontHasPassedAreClosedAtTheirMidpoints) {
   // Three intervals of one source with gaps of 1e-9 and 1e-6 between them (edge 10, distances
   // about 3 there): with a widest closable gap of 1e-8, the first closes at its midpoint, the
