@@ -622,11 +622,11 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
         m = w;
       }
 
-      // --- Step 4: sew gaps shorter than ε (D3); an overlap left here (D2) is resolved as in
-      //     step 1 (overlapMeetingPoint). The paper sews a gap at its midpoint; where only one side
-      //     is still pending we move that side's end across the whole gap instead, so the
-      //     propagated side need not be propagated again (either way each point of the gap takes a
-      //     neighbour's value, which is all step 4 promises). The edge's ends count as neighbours.
+      // --- Step 4: sew gaps shorter than ε (D3). The paper sews a gap at its midpoint; where
+      //     only one side is still pending we move that side's end across the whole gap instead,
+      //     so the propagated side need not be propagated again (either way each point of the gap
+      //     takes a neighbour's value, which is all step 4 promises). The edge's ends count as
+      //     neighbours.
       if (m > 0) {
         Interval& front = L[0];
         if (atFront && front.b0 > 0.0 && front.b0 < sewLength(front, edgeLength)) {
@@ -647,31 +647,29 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
           Interval& q = L[k + 1];
           const double gap = q.b0 - p.b1;
           if (gap == 0.0) continue;
-          const double tiny = std::max(tinyLength(p, edgeLength), tinyLength(q, edgeLength));
-          if (gap > 0.0) {
-            // (A flat vertex's shadow, kFlatVertexAngle × the rays' length, is below sewLength;
-            // wider shadows are closed when the wavefront has passed: tol::kShadowSewRel.)
-            if (gap >= std::max(sewLength(p, edgeLength), sewLength(q, edgeLength))) continue;
-            ++report.degeneracies[DegeneracyKind::D3];
-            again = true;
-            if (p.pending() && !q.pending()) {
-              setRange(p, p.b0, q.b0);
-            } else if (q.pending() && !p.pending()) {
-              setRange(q, p.b1, q.b1);
-            } else {
-              const double mid = 0.5 * (p.b1 + q.b0);
-              if (!p.pending()) grewUnpropagated(p);
-              if (!q.pending()) grewUnpropagated(q);
-              setRange(p, p.b0, mid);
-              setRange(q, mid, q.b1);
-            }
+          // No overlap reaches step 4: the slice comes from a list without one, step 1 resolves
+          // every D2 at the incoming ends and cuts everything else exactly, step 3 grows a
+          // neighbour exactly to a removed sliver's end, and steps 4 and 5 only close gaps. (The
+          // D2 branch once here was reached by no test, property or corpus file: mutant
+          // f1918372, docs/mutation.md.)
+          GEODEX_CHECK(gap > 0.0, "step 4 met neighbours overlapping by " << -gap << " on ["
+                                      << q.b0 << ", " << p.b1 << "]");
+          // (A flat vertex's shadow, kFlatVertexAngle × the rays' length, is below sewLength;
+          // wider shadows are closed when the wavefront has passed: tol::kShadowSewRel.)
+          if (!(gap > 0.0) || gap >= std::max(sewLength(p, edgeLength), sewLength(q, edgeLength)))
+            continue;
+          ++report.degeneracies[DegeneracyKind::D3];
+          again = true;
+          if (p.pending() && !q.pending()) {
+            setRange(p, p.b0, q.b0);
+          } else if (q.pending() && !p.pending()) {
+            setRange(q, p.b1, q.b1);
           } else {
-            if (gap <= -tiny) continue;
-            ++report.degeneracies[DegeneracyKind::D2];
-            again = true;
-            const double meet = overlapMeetingPoint(p, q, q.b0, p.b1, edgeLength);
-            setRange(p, p.b0, meet);
-            setRange(q, meet, q.b1);
+            const double mid = 0.5 * (p.b1 + q.b0);
+            if (!p.pending()) grewUnpropagated(p);
+            if (!q.pending()) grewUnpropagated(q);
+            setRange(p, p.b0, mid);
+            setRange(q, mid, q.b1);
           }
         }
       }
