@@ -524,14 +524,19 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
     // length scale around (tinyLengthBetween takes ε or a ray-end precision, kRayEndRel <=
     // kTinyIntervalRel, of the interval or a neighbour; steps 3–5 move ranges, never sources):
     // most of a solve's intervals are told apart by one comparison.
-    double largestScale = edgeLength;
-    for (std::size_t k = 0; k < m; ++k)
+    double largestScale = edgeLength, shortest = edgeLength;
+    for (std::size_t k = 0; k < m; ++k) {
       largestScale = std::max(largestScale, intervalLengthScale(L[k], edgeLength));
+      shortest = std::min(shortest, L[k].length());
+    }
     if (outerPrev != nullptr)
       largestScale = std::max(largestScale, intervalLengthScale(*outerPrev, edgeLength));
     if (outerNext != nullptr)
       largestScale = std::max(largestScale, intervalLengthScale(*outerNext, edgeLength));
     const double sliverBound = tol::kTinyIntervalRel * largestScale;
+    // Steps 3–5 only move ends outwards or join neighbours, so with no interval below the bound
+    // now, step 3 finds nothing in any pass.
+    const bool mayHaveSlivers = shortest < sliverBound;
 
     // Steps 3–5 repeat while step 4 or 5 changes anything: an interval that grows over a sewn
     // gap can come to touch a coarser neighbour and be a D1 sliver next to it
@@ -548,7 +553,7 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
       //     itself still be tiny next to a coarser one: repeat until nothing is (each pass removes
       //     at least one interval, so this ends). An interval's ε depends on its pseudo-source
       //     only, which merging does not change.
-      for (bool removed = true; removed;) {
+      for (bool removed = mayHaveSlivers; removed;) {
         removed = false;
         std::size_t w = 0;
         for (std::size_t r = 0; r < m; ++r) {
