@@ -717,11 +717,10 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
       return a.source == b.source && a.sigma == b.sigma && a.side == b.side &&
              a.origin == b.origin && a.pending() == b.pending();
     };
-    const bool frontKept =
-        s0 == 0 || (m > 0 && out.front().b0 == list_[s0].b0 && sameFunction(out.front(), list_[s0]));
-    const bool backKept =
-        s1 == n ||
-        (m > 0 && out[m - 1].b1 == list_[s1 - 1].b1 && sameFunction(out[m - 1], list_[s1 - 1]));
+    const bool frontKept = s0 == 0 || (m > 0 && out.front().b0 == list_[s0].b0 &&
+                                       sameFunction(out.front(), list_[s0]));
+    const bool backKept = s1 == n || (m > 0 && out[m - 1].b1 == list_[s1 - 1].b1 &&
+                                      sameFunction(out[m - 1], list_[s1 - 1]));
     if (frontKept && backKept) break;
     if (!frontKept) s0 = s0 >= 2 ? s0 - 2 : 0;
     if (!backKept) s1 = std::min(n, s1 + 2);

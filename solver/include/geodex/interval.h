@@ -47,11 +47,19 @@ struct SourcePoint {
   }
   friend bool operator==(const SourcePoint&, const SourcePoint&) = default;
 };
-inline Vec2 operator-(const SourcePoint& a, const SourcePoint& b) { return Vec2(a.px - b.px, a.py - b.py); }
-inline Vec2 operator-(const SourcePoint& a, const Vec2& b) { return Vec2(a.px - b.x(), a.py - b.y()); }
-inline Vec2 operator-(const Vec2& a, const SourcePoint& b) { return Vec2(a.x() - b.px, a.y() - b.py); }
+inline Vec2 operator-(const SourcePoint& a, const SourcePoint& b) {
+  return Vec2(a.px - b.px, a.py - b.py);
+}
+inline Vec2 operator-(const SourcePoint& a, const Vec2& b) {
+  return Vec2(a.px - b.x(), a.py - b.y());
+}
+inline Vec2 operator-(const Vec2& a, const SourcePoint& b) {
+  return Vec2(a.x() - b.px, a.y() - b.py);
+}
 inline Vec2 operator*(const SourcePoint& a, double k) { return Vec2(a.px * k, a.py * k); }
-inline bool operator==(const SourcePoint& a, const Vec2& b) { return a.px == b.x() && a.py == b.y(); }
+inline bool operator==(const SourcePoint& a, const Vec2& b) {
+  return a.px == b.x() && a.py == b.y();
+}
 inline bool isFinite(const SourcePoint& p) { return std::isfinite(p.px) && std::isfinite(p.py); }
 
 struct Interval {
