@@ -432,17 +432,13 @@ double edgeWithDyadicEpsilon(double& eps) {
   return L;
 }
 
-TEST(Algorithm2, AnOverlapOfExactlyEpsilonAtTheNewStartIsARealOverlapSplitByEq1) {
-  // D2 is an overlap shorter than ε (the larger of the two intervals' ε); one of exactly ε is
-  // real and step 2 splits it by Eq. 1. Here the old interval is shorter on all of it (the
-  // bisector lies ε past its end) and keeps it whole. Met at the midpoint as a D2 (the two agree
-  // there to kContinuityRel), the longer incoming distance would take half of it.
-  double eps = 0.0;
-  const double L = edgeWithDyadicEpsilon(eps);
-  const Interval old = make(0.0, 5.0, Vec2(2.0 + eps, 1.0), 0.0);
-  const Interval in = make(5.0 - eps, L, Vec2(8.0 + eps, 1.0), 0.0);
+// `in` overlaps `old` by exactly eps = ε on an edge of length L, and old is shorter on all of the
+// overlap: no D2, the two meet at old's end (or start) 5, and at x, inside the overlap, the list
+// gives old's distance.
+void expectAnOverlapOfExactlyEpsilonSplitByEq1(const Interval& old, const Interval& in, double L,
+                                               double eps, double x) {
   ASSERT_EQ(std::max(tinyLength(old, L), tinyLength(in, L)), eps);
-  ASSERT_EQ(old.b1 - in.b0, eps);
+  ASSERT_EQ(std::min(old.b1, in.b1) - std::max(old.b0, in.b0), eps);
   EdgeIntervals list;
   EdgeUpdateReport report;
   std::vector<Interval> scratch;
@@ -452,9 +448,21 @@ TEST(Algorithm2, AnOverlapOfExactlyEpsilonAtTheNewStartIsARealOverlapSplitByEq1)
   ASSERT_EQ(list.intervals().size(), 2u);
   EXPECT_EQ(list.intervals()[0].b1, 5.0);
   EXPECT_EQ(list.intervals()[1].b0, 5.0);
-  const double x = 5.0 - eps / 4;  // in the half a midpoint would give away
   ASSERT_LT(old.distanceAt(x), in.distanceAt(x));
   EXPECT_EQ(list.distanceAt(x), old.distanceAt(x));
+}
+
+TEST(Algorithm2, AnOverlapOfExactlyEpsilonAtTheNewStartIsARealOverlapSplitByEq1) {
+  // D2 is an overlap shorter than ε (the larger of the two intervals' ε); one of exactly ε is
+  // real and step 2 splits it by Eq. 1. Here the old interval is shorter on all of it (the
+  // bisector lies ε past its end) and keeps it whole. Met at the midpoint as a D2 (the two agree
+  // there to kContinuityRel), the longer incoming distance would take half of it; x = 5 − ε/4 is
+  // in that half.
+  double eps = 0.0;
+  const double L = edgeWithDyadicEpsilon(eps);
+  expectAnOverlapOfExactlyEpsilonSplitByEq1(make(0.0, 5.0, Vec2(2.0 + eps, 1.0), 0.0),
+                                            make(5.0 - eps, L, Vec2(8.0 + eps, 1.0), 0.0), L, eps,
+                                            5.0 - eps / 4);
 }
 
 TEST(Algorithm2, AnOverlapOfExactlyEpsilonAtTheNewEndIsARealOverlapSplitByEq1) {
@@ -462,22 +470,9 @@ TEST(Algorithm2, AnOverlapOfExactlyEpsilonAtTheNewEndIsARealOverlapSplitByEq1) {
   // one ends, and is shorter on all of the overlap.
   double eps = 0.0;
   const double L = edgeWithDyadicEpsilon(eps);
-  const Interval old = make(5.0, L, Vec2(8.0 - eps, 1.0), 0.0);
-  const Interval in = make(0.0, 5.0 + eps, Vec2(2.0 - eps, 1.0), 0.0);
-  ASSERT_EQ(std::max(tinyLength(old, L), tinyLength(in, L)), eps);
-  ASSERT_EQ(in.b1 - old.b0, eps);
-  EdgeIntervals list;
-  EdgeUpdateReport report;
-  std::vector<Interval> scratch;
-  list.insert(old, L, report, scratch);
-  list.insert(in, L, report, scratch);
-  EXPECT_EQ(report.degeneracies[DegeneracyKind::D2], 0u);
-  ASSERT_EQ(list.intervals().size(), 2u);
-  EXPECT_EQ(list.intervals()[0].b1, 5.0);
-  EXPECT_EQ(list.intervals()[1].b0, 5.0);
-  const double x = 5.0 + eps / 4;
-  ASSERT_LT(old.distanceAt(x), in.distanceAt(x));
-  EXPECT_EQ(list.distanceAt(x), old.distanceAt(x));
+  expectAnOverlapOfExactlyEpsilonSplitByEq1(make(5.0, L, Vec2(8.0 - eps, 1.0), 0.0),
+                                            make(0.0, 5.0 + eps, Vec2(2.0 - eps, 1.0), 0.0), L, eps,
+                                            5.0 + eps / 4);
 }
 
 TEST(Algorithm2, AnEq1BreakpointAtARemovedSliverIsNoLongerABreakpoint) {
