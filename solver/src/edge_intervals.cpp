@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <bit>
-#include <cstdint>
 #include <cmath>
+#include <cstdint>
 
 #include "geodex/check.h"
 #include "geodex/tolerance.h"
@@ -337,8 +337,9 @@ int equalDistanceCandidates(const Interval& a, const Interval& b, double lo, dou
   const double m = 0.5 * (lo + hi);
   // The coefficients are products of up to six lengths: measured in a power of two of the
   // largest one (exact), they stay of order one at any mesh scale and source distance.
-  const double size = std::max({std::abs(a.source.x() - m), a.source.y(), std::abs(b.source.x() - m),
-                                b.source.y(), std::abs(b.sigma - a.sigma), 0.5 * (hi - lo)});
+  const double size =
+      std::max({std::abs(a.source.x() - m), a.source.y(), std::abs(b.source.x() - m), b.source.y(),
+                std::abs(b.sigma - a.sigma), 0.5 * (hi - lo)});
 #ifdef GEODEX_NO_MESH_UNITS  // bench-only build (solver/CMakeLists.txt)
   const double k = 1.0;
 #else
@@ -378,28 +379,392 @@ int equalDistanceCandidates(const Interval& a, const Interval& b, double lo, dou
 }
 
 // ===  Algorithm 2 ================================================================================
+// EdgeIntervals::insert (at the end) finds the slice of the list an update reads and rewrites,
+// runs steps 1 and 2 over it into a buffer, steps 3–5 over the buffer, widens the slice and starts
+// again when those changed an interval at its edge, and splices the buffer back. Each step is a
+// function of its own below.
+namespace {
+
+// Pieces of the incoming interval carry this flag until the end of the update, so that
+// report.incomingSurvived can tell whether any of it is left.
+constexpr std::uint8_t kFromIncoming = 4;
+
+// ===  Steps 1 and 2 ==============================================================================
+// One pass over the slice (the list's intervals [s0, s1), given as `slice`; the first of them
+// the incoming range reaches is slice[firstReached]). Step 1 splits each old interval at the new
+// one's ends, so that each piece is wholly inside or outside it (an overlap shorter than ε is not
+// split off: it is D2, two intervals intersecting by a rounding error, resolved by
+// overlapMeetingPoint). Step 2 keeps, on each piece inside, the shorter of the two; the new
+// interval fills what no old interval covered. Writes the slice's new intervals, in order, to
+// `out`; `scan` holds what incomingLosesEverywhere already decided about the reached ones.
+void splitAndKeepShorter(std::span<const Interval> slice, std::size_t firstReached,
+                         const Interval& incoming, const ReachedScan& scan, double edgeLength,
+                         EdgeUpdateReport& report, std::vector<Interval>& out) {
+  Interval in = incoming;
+  in.flags = static_cast<std::uint8_t>((incoming.flags & Interval::kPending) | Interval::kChanged |
+                                       kFromIncoming);
+  auto newPiece = [&](double lo, double hi) {  // appends the incoming interval's piece [lo, hi]
+    out.push_back(in);
+    out.back().b0 = lo;
+    out.back().b1 = hi;
+  };
+  out.clear();
+  double cursor = in.b0;      // the incoming range up to here is accounted for
+  bool incomingDone = false;  // the incoming interval's pieces are all in `out`
+  auto finishIncoming = [&] {
+    if (!incomingDone && cursor < in.b1) newPiece(cursor, in.b1);
+    incomingDone = true;
+  };
+  for (std::size_t k = 0; k < slice.size(); ++k) {
+    const Interval& before = slice[k];
+    if (before.b1 <= in.b0) {  // before the incoming range
+      out.push_back(before);
+      continue;
+    }
+    if (incomingDone || before.b0 >= in.b1) {  // after it
+      finishIncoming();
+      out.push_back(before);
+      continue;
+    }
+    Interval w = before;
+    // Every piece cut from w is checked against where w's smallest distance was: the piece that
+    // still has it keeps w's queue entry, the others (when pending) need their own.
+    const double minX = w.argMinDistance();
+    const Interval::MinAt minAt = w.minAt();
+    auto oldPiece = [&](Interval& piece) { keepOrRequeue(piece, minX, minAt); };
+    const double overlapTiny = std::max(tinyLength(w, edgeLength), tinyLength(in, edgeLength));
+    if (overlapsStartByD2(w, in, overlapTiny)) {  // D2 at the new one's start
+      ++report.degeneracies[DegeneracyKind::D2];
+      const double meet = overlapMeetingPoint(w, in, in.b0, w.b1, edgeLength);
+      w.b1 = meet;
+      in.b0 = cursor = meet;
+      oldPiece(w);
+      out.push_back(w);
+      continue;
+    }
+    if (overlapsEndByD2(w, in, overlapTiny)) {  // D2 at the new one's end
+      ++report.degeneracies[DegeneracyKind::D2];
+      const double meet = overlapMeetingPoint(in, w, w.b0, in.b1, edgeLength);
+      w.b0 = meet;
+      in.b1 = meet;
+      oldPiece(w);
+      finishIncoming();
+      out.push_back(w);
+      continue;
+    }
+    if (w.b0 < in.b0) {  // 1.3: separate at interb0
+      Interval left = w;
+      left.b1 = in.b0;
+      oldPiece(left);
+      out.push_back(left);
+      w.b0 = in.b0;
+    }
+    const bool hasRight = w.b1 > in.b1;
+    if (hasRight) w.b1 = in.b1;  // 1.4: separate at interb1 (the right piece is added below)
+    if (w.b0 > cursor) newPiece(cursor, w.b0);  // a gap: the new one's
+    cursor = w.b1;
+    if (sameSource(in, w, edgeLength)) {  // the same geodesic arriving again: keep the old
+      oldPiece(w);
+      out.push_back(w);
+    } else {
+      oldPiece(w);  // as cut by step 1; keepShorter may cut it further
+      // (The scan saw the same cut: only an interval after a D2 overlap, which ends the scan,
+      // is cut differently.)
+      const std::size_t reachedIndex = k - firstReached;
+      if (reachedIndex < scan.lostPrefix) {
+        out.push_back(w);
+      } else {
+        keepShorter(in, w,
+                    reachedIndex == scan.lostPrefix && scan.stopSampled
+                        ? scan.stop
+                        : sampleWinners(in, w, w.b0, w.b1, edgeLength),
+                    edgeLength, report, out, newPiece, oldPiece);
+      }
+    }
+    if (hasRight) {  // 1.4's right piece
+      incomingDone = true;
+      out.push_back(before);
+      Interval& right = out.back();
+      right.b0 = in.b1;
+      oldPiece(right);
+    }
+  }
+  finishIncoming();
+}
+
+// What steps 3–5 work on: the slice's new intervals L[0, m) (through a raw pointer and a count:
+// writes to the intervals' one-byte fields may alias anything, which would make every size() and
+// [i] of a vector reload the vector's own pointers), and the list's intervals just outside the
+// slice, which the steps read but do not change (null at an end of the edge).
+struct Slice {
+  Interval* L;
+  std::size_t m;
+  const Interval* outerPrev;
+  const Interval* outerNext;
+  double edgeLength;
+};
+
+// ===  Step 3: remove tiny intervals (D1) =========================================================
+// Each is merged into a neighbour that may grow over it (canTakeSliver); one no neighbour may
+// take is kept. A neighbour grown this way may itself still be tiny next to a coarser one: repeat
+// until nothing is (each pass removes at least one interval, so this ends). An interval's ε
+// depends on its pseudo-source only, which merging does not change. Intervals at least
+// `sliverBound` long are no D1 at any threshold (see repairSlice).
+void removeTinyIntervals(Slice& s, double sliverBound, EdgeUpdateReport& report) {
+  Interval* const L = s.L;
+  const double edgeLength = s.edgeLength;
+  for (bool removed = true; removed;) {
+    removed = false;
+    std::size_t w = 0;
+    for (std::size_t r = 0; r < s.m; ++r) {
+      const double length = L[r].length();
+      if (length >= sliverBound) {  // no D1 threshold reaches this far (see sliverBound)
+        if (w != r) L[w] = L[r];
+        ++w;
+        continue;
+      }
+      // L[r]'s neighbours: the last one kept and the next one, or the slice's outer ones (one
+      // of those taking L[r] makes step 3 remove it here; the update is then done again
+      // over a wider slice, where the neighbour can grow).
+      const Interval* const prev = w > 0 ? &L[w - 1] : s.outerPrev;
+      const Interval* const next = r + 1 < s.m ? &L[r + 1] : s.outerNext;
+      // ε of L[r] itself, or a touching neighbour's ray-end precision when larger: a sliver
+      // within that of a coarser window's end may be its rounding (tol::kRayEndRel). Not the
+      // neighbour's whole ε: a longer sliver can be the start of a near saddle's shadow,
+      // which fans out downstream where the far rays never reach. The checker applies the
+      // same rule (tinyLengthInList) to the whole list, so the outer neighbours count here.
+      const double tiny = tinyLengthBetween(prev, L[r], next, edgeLength);
+      // An edge shorter than ε has nothing but D1 slivers: the last one left is the edge's
+      // distance to the precision its source allows, and step 4 sews it to both ends.
+      // Removing it too left the edge uncovered (corpus/fuzz_two_faces/regress/
+      // full-coverage-edge-shorter-than-epsilon-lost-its-last-interval).
+      const bool belowTiny = length < tiny;
+      const bool lastOnShortEdge =
+          belowTiny && edgeLength < tiny &&
+          (prev == nullptr || prev->b1 < L[r].b0 - tinyLength(*prev, edgeLength)) &&
+          (next == nullptr || next->b0 > L[r].b1 + tinyLength(*next, edgeLength));
+      // Only a sliver asks its neighbours (two square roots each, for most intervals of a
+      // solve otherwise).
+      const bool sliver = belowTiny && !lastOnShortEdge;
+      const bool prevTakes = sliver && prev != nullptr && canTakeSliver(*prev, L[r], edgeLength);
+      const bool nextTakes = sliver && next != nullptr && canTakeSliver(*next, L[r], edgeLength);
+      if (!(prevTakes || nextTakes)) {
+        if (w != r) L[w] = L[r];
+        ++w;
+        continue;
+      }
+      removed = true;
+      ++report.degeneracies[DegeneracyKind::D1];
+      const Interval t = L[r];
+      report.removedTiny.emplace_back(t.b0, t.b1);
+      // An Eq. 1 breakpoint at an end of the removed sliver now joins a neighbour that grew
+      // over the sliver to the one beyond, which Eq. 1 never made equal: it is no breakpoint
+      // any more
+      // (corpus/fuzz_edge_update/regress/continuous-at-eq1-breakpoint-of-removed-sliver).
+      std::erase_if(report.eq1Breakpoints, [&](double x) { return x == t.b0 || x == t.b1; });
+      // Prefer the neighbour with the coarser scale: merging into the same-scale one would only
+      // leave a sliver as thin as before beside the coarse one. Between equal scales, prefer
+      // the one that needs no second propagation (a pending one for a pending sliver).
+      const bool prevTouches = w > 0 && prevTakes;
+      const bool nextTouches = r + 1 < s.m && nextTakes;
+      bool intoNext = nextTouches && !prevTouches;
+      if (nextTouches && prevTouches) {
+        const double tinyPrev = tinyLength(L[w - 1], edgeLength);
+        const double tinyNext = tinyLength(L[r + 1], edgeLength);
+        intoNext = tinyNext > tinyPrev || (tinyNext == tinyPrev && t.pending() &&
+                                           L[r + 1].pending() && !L[w - 1].pending());
+      }
+      if (intoNext || prevTouches) {
+        Interval& into = intoNext ? L[r + 1] : L[w - 1];
+        if (intoNext) {
+          setRange(into, std::min(into.b0, t.b0), into.b1);
+        } else {
+          setRange(into, into.b0, std::max(into.b1, t.b1));
+        }
+        if (t.pending() && !into.pending()) grewUnpropagated(into);
+      }
+    }
+    s.m = w;
+  }
+}
+
+// ===  Step 4: sew gaps shorter than ε (D3) =======================================================
+// The paper sews a gap at its midpoint; where only one side is still pending we move that side's
+// end across the whole gap instead, so the propagated side need not be propagated again (either
+// way each point of the gap takes a neighbour's value, which is all step 4 promises). The edge's
+// ends count as neighbours. Returns whether it sewed anything.
+bool sewSmallGaps(Slice& s, EdgeUpdateReport& report) {
+  if (s.m == 0) return false;
+  Interval* const L = s.L;
+  const double edgeLength = s.edgeLength;
+  bool sewn = false;
+  Interval& front = L[0];
+  if (s.outerPrev == nullptr && front.b0 > 0.0 && front.b0 < sewLength(front, edgeLength)) {
+    ++report.degeneracies[DegeneracyKind::D3];
+    if (!front.pending()) grewUnpropagated(front);
+    setRange(front, 0.0, front.b1);
+    sewn = true;
+  }
+  Interval& back = L[s.m - 1];
+  if (s.outerNext == nullptr && back.b1 < edgeLength &&
+      edgeLength - back.b1 < sewLength(back, edgeLength)) {
+    ++report.degeneracies[DegeneracyKind::D3];
+    if (!back.pending()) grewUnpropagated(back);
+    setRange(back, back.b0, edgeLength);
+    sewn = true;
+  }
+  for (std::size_t k = 0; k + 1 < s.m; ++k) {
+    Interval& p = L[k];
+    Interval& q = L[k + 1];
+    const double gap = q.b0 - p.b1;
+    if (gap == 0.0) continue;
+    // No overlap reaches step 4: the slice comes from a list without one, step 1 resolves
+    // every D2 at the incoming ends and cuts everything else exactly, step 3 grows a
+    // neighbour exactly to a removed sliver's end, and steps 4 and 5 only close gaps. (The
+    // D2 branch once here was reached by no test, property or corpus file: mutant
+    // f1918372, docs/mutation.md.)
+    GEODEX_CHECK(gap > 0.0, "step 4 met neighbours overlapping by " << -gap << " on [" << q.b0
+                                                                    << ", " << p.b1 << "]");
+    // (A flat vertex's shadow, kFlatVertexAngle × the rays' length, is below sewLength;
+    // wider shadows are closed when the wavefront has passed: tol::kShadowSewRel.)
+    if (!(gap > 0.0) || gap >= std::max(sewLength(p, edgeLength), sewLength(q, edgeLength)))
+      continue;
+    ++report.degeneracies[DegeneracyKind::D3];
+    sewn = true;
+    if (p.pending() && !q.pending()) {
+      setRange(p, p.b0, q.b0);
+    } else if (q.pending() && !p.pending()) {
+      setRange(q, p.b1, q.b1);
+    } else {
+      const double mid = 0.5 * (p.b1 + q.b0);
+      if (!p.pending()) grewUnpropagated(p);
+      if (!q.pending()) grewUnpropagated(q);
+      setRange(p, p.b0, mid);
+      setRange(q, mid, q.b1);
+    }
+  }
+  return sewn;
+}
+
+// ===  Step 5: merge neighbours with the same pseudo-source =======================================
+// And the same propagation state: merging a propagated interval into a pending one would
+// propagate it a second time. The merged interval keeps the first one's function. Returns whether
+// a merged pair differed in source or σ (within kSameSourceRel): only then can steps 3 and 4 find
+// something new.
+bool mergeSameSources(Slice& s) {
+  Interval* const L = s.L;
+  bool functionGrew = false;
+  std::size_t w = 0;
+  for (std::size_t r = 0; r < s.m; ++r) {
+    if (w > 0 && L[w - 1].b1 == L[r].b0 && L[w - 1].pending() == L[r].pending() &&
+        sameSource(L[w - 1], L[r], s.edgeLength)) {
+      setRange(L[w - 1], L[w - 1].b0, L[r].b1);
+      L[w - 1].flags |= static_cast<std::uint8_t>(L[r].flags & kFromIncoming);
+      if (L[w - 1].source != L[r].source || L[w - 1].sigma != L[r].sigma) functionGrew = true;
+      continue;
+    }
+    if (w != r) L[w] = L[r];
+    ++w;
+  }
+  s.m = w;
+  return functionGrew;
+}
+
+// ===  Steps 3–5 ==================================================================================
+// They repeat while step 4 or 5 changes anything: an interval that grows over a sewn gap can come
+// to touch a coarser neighbour and be a D1 sliver next to it
+// (corpus/fuzz_edge_update/regress/no-tiny-interval-short-edge-window-not-sewn-to-a-near-
+// neighbour), and one that step 5 merges with a piece of a near-equal source carries its own
+// function over the piece's range, where it may take a sliver beside it (canTakeSliver) that the
+// piece could not (corpus/fuzz_edge_update/regress/no-tiny-interval-step-5-merge-makes-a-sliver-
+// takeable-after-step-3). Each pass sews or resolves what it finds for good, and steps 3 and 5
+// only remove, so this ends. Returns whether any piece of the incoming interval is left.
+bool repairSlice(Slice& s, EdgeUpdateReport& report) {
+  // No interval of the slice can be a D1 sliver unless it is shorter than ε at the largest
+  // length scale around (tinyLengthBetween takes ε or a ray-end precision, kRayEndRel <=
+  // kTinyIntervalRel, of the interval or a neighbour; steps 3–5 move ranges, never sources):
+  // most of a solve's intervals are told apart by one comparison.
+  double largestScale = s.edgeLength, shortest = s.edgeLength;
+  for (std::size_t k = 0; k < s.m; ++k) {
+    largestScale = std::max(largestScale, intervalLengthScale(s.L[k], s.edgeLength));
+    shortest = std::min(shortest, s.L[k].length());
+  }
+  if (s.outerPrev != nullptr)
+    largestScale = std::max(largestScale, intervalLengthScale(*s.outerPrev, s.edgeLength));
+  if (s.outerNext != nullptr)
+    largestScale = std::max(largestScale, intervalLengthScale(*s.outerNext, s.edgeLength));
+  const double sliverBound = tol::kTinyIntervalRel * largestScale;
+  // Steps 3–5 only move ends outwards or join neighbours, so with no interval below the bound
+  // now, step 3 finds nothing in any pass.
+  const bool mayHaveSlivers = shortest < sliverBound;
+
+  for (bool again = true; again;) {
+    if (mayHaveSlivers) removeTinyIntervals(s, sliverBound, report);
+    const bool sewn = sewSmallGaps(s, report);
+    const bool functionGrew = mergeSameSources(s);
+    again = sewn || functionGrew;
+  }
+
+  bool incomingSurvived = false;
+  for (std::size_t k = 0; k < s.m; ++k) {
+    if (s.L[k].flags & kFromIncoming) incomingSurvived = true;
+    s.L[k].flags &= static_cast<std::uint8_t>(~kFromIncoming);
+  }
+  return incomingSurvived;
+}
+
+// Whether `now`, the rewritten slice's first (last) interval, leaves the outer neighbour as
+// `was`, the slice's first (last) before the update, did. The outer neighbour's relation to it (a
+// gap to sew, a sliver to take, a source to merge with) depends on its outer end, function and
+// state only: where steps 3–5 moved only its inner end, a wider slice finds nothing more. (One in
+// eight of bunny00's updates was done twice when any change to it widened the slice.) The outer
+// end moves when step 3 removes the first interval; the function alone does not tell it, for the
+// next one may have the same source behind a gap (corpus/fuzz_edge_update/regress/pointwise-min-
+// sliver-taken-by-the-outer-neighbour-before-a-gap-to-the-same-source). A sliver the outer
+// neighbour takes moves the end too; one an inner neighbour takes changes the function
+// (Algorithm2.AGapBesideTheUpdateIsSewnWhenTheIntervalNextToItGoesToACoarserWindow).
+bool keepsTheOuterEnd(const Interval& now, const Interval& was, double nowEnd, double wasEnd) {
+  return nowEnd == wasEnd && now.source == was.source && now.sigma == was.sigma &&
+         now.side == was.side && now.origin == was.origin && now.pending() == was.pending();
+}
+
+// Replaces the intervals [s0, s1) of `list` by `rewritten`.
+void spliceSlice(std::vector<Interval, IntervalAllocator<Interval>>& list, std::size_t s0,
+                 std::size_t s1, std::span<const Interval> rewritten) {
+  const std::size_t oldCount = s1 - s0, newCount = rewritten.size(), oldSize = list.size();
+  Interval* data = list.data();
+  if (newCount > oldCount) {
+    const std::size_t newSize = oldSize + newCount - oldCount;
+    if (newSize > list.capacity()) {
+      // To the next size class, a quarter up, not the default doubling: the lists are most of
+      // the solver's memory.
+      list.reserve(IntervalPool::capacityFor(newSize));
+    }
+    list.resize(newSize);
+    data = list.data();
+    std::copy_backward(data + s1, data + oldSize, data + newSize);
+  } else if (newCount < oldCount) {
+    std::copy(data + s1, data + oldSize, data + s0 + newCount);
+    list.resize(oldSize - (oldCount - newCount));
+  }
+  std::copy(rewritten.begin(), rewritten.end(), data + s0);
+}
+
+}  // namespace
+
 void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpdateReport& report,
                            std::vector<Interval>& out) {
   GEODEX_CHECK(incoming.b0 >= 0.0 && incoming.b1 <= edgeLength && incoming.b0 < incoming.b1,
                "incoming interval [" << incoming.b0 << ", " << incoming.b1 << "] not inside [0, "
                                      << edgeLength << "]");
   report.clear();
-  // Pieces of the incoming interval carry kFromIncoming until the end of the update, so that
-  // report.incomingSurvived can tell whether any of it is left.
-  constexpr std::uint8_t kFromIncoming = 4;
-  Interval in;
-  auto newPiece = [&](double lo, double hi) {  // appends the incoming interval's piece [lo, hi]
-    out.push_back(in);
-    out.back().b0 = lo;
-    out.back().b1 = hi;
-  };
 
   // --- The slice this update reads and rewrites: the old intervals the incoming range reaches,
   //     and one more on each side. The list is clean outside the incoming range (the previous
   //     update left it so), so steps 3–5 can only find something at the changed intervals and
   //     their neighbours. Should they change an outer neighbour (sew a gap to it, merge a tiny
   //     interval into it, merge it with a piece of the same source), its own neighbour may be
-  //     involved too: the slice is widened and the update done again (see frontKept below).
+  //     involved too: the slice is widened and the update done again (keepsTheOuterEnd).
   const std::size_t n = list_.size();
   const std::size_t j0 = partitionFrom(list_, guessIndex(n, incoming.b0, edgeLength),
                                        [&](const Interval& w) { return w.b1 <= incoming.b0; });
@@ -409,344 +774,37 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
   // on bunny00, reaching 13 intervals each, mostly a saddle's whole-edge windows (its windows
   // along its own edges lose, by the triangle inequality, to those that reached it). The
   // report names the intervals it lost to; the full verify tier samples the incoming range.
+  const std::span<const Interval> list(list_);
   ReachedScan scan;
-  if (incomingLosesEverywhere(incoming, std::span<const Interval>(list_).subspan(j0, j1 - j0),
-                              edgeLength, scan)) {
+  if (incomingLosesEverywhere(incoming, list.subspan(j0, j1 - j0), edgeLength, scan)) {
     report.first = j0;
     report.last = j1;
     return;
   }
   std::size_t s0 = j0 >= 1 ? j0 - 1 : 0;
   std::size_t s1 = std::min(n, j1 + 1);
-  std::size_t m = 0;
+  Slice s{};
   for (;;) {
-    in = incoming;
-    in.flags = static_cast<std::uint8_t>((incoming.flags & Interval::kPending) |
-                                         Interval::kChanged | kFromIncoming);
-
-    // --- Steps 1 and 2 in one pass over the slice. Step 1 splits each old interval at the new
-    //     one's ends, so that each piece is wholly inside or outside it (an overlap shorter than ε
-    //     is not split off: it is D2, two intervals intersecting by a rounding error, resolved by
-    //     overlapMeetingPoint). Step 2 keeps, on each piece inside, the shorter of
-    //     the two; the new interval fills what no old interval covered.
-    out.clear();
-    double cursor = in.b0;      // the incoming range up to here is accounted for
-    bool incomingDone = false;  // the incoming interval's pieces are all in `out`
-    auto finishIncoming = [&] {
-      if (!incomingDone && cursor < in.b1) newPiece(cursor, in.b1);
-      incomingDone = true;
-    };
-    for (std::size_t k = s0; k < s1; ++k) {
-      const Interval& before = list_[k];
-      if (before.b1 <= in.b0) {  // before the incoming range
-        out.push_back(before);
-        continue;
-      }
-      if (incomingDone || before.b0 >= in.b1) {  // after it
-        finishIncoming();
-        out.push_back(before);
-        continue;
-      }
-      Interval w = before;
-      // Every piece cut from w is checked against where w's smallest distance was: the piece that
-      // still has it keeps w's queue entry, the others (when pending) need their own.
-      const double minX = w.argMinDistance();
-      const Interval::MinAt minAt = w.minAt();
-      auto oldPiece = [&](Interval& piece) { keepOrRequeue(piece, minX, minAt); };
-      const double overlapTiny = std::max(tinyLength(w, edgeLength), tinyLength(in, edgeLength));
-      if (overlapsStartByD2(w, in, overlapTiny)) {  // D2 at the new one's start
-        ++report.degeneracies[DegeneracyKind::D2];
-        const double meet = overlapMeetingPoint(w, in, in.b0, w.b1, edgeLength);
-        w.b1 = meet;
-        in.b0 = cursor = meet;
-        oldPiece(w);
-        out.push_back(w);
-        continue;
-      }
-      if (overlapsEndByD2(w, in, overlapTiny)) {  // D2 at the new one's end
-        ++report.degeneracies[DegeneracyKind::D2];
-        const double meet = overlapMeetingPoint(in, w, w.b0, in.b1, edgeLength);
-        w.b0 = meet;
-        in.b1 = meet;
-        oldPiece(w);
-        finishIncoming();
-        out.push_back(w);
-        continue;
-      }
-      if (w.b0 < in.b0) {  // 1.3: separate at interb0
-        Interval left = w;
-        left.b1 = in.b0;
-        oldPiece(left);
-        out.push_back(left);
-        w.b0 = in.b0;
-      }
-      const bool hasRight = w.b1 > in.b1;
-      if (hasRight) w.b1 = in.b1;  // 1.4: separate at interb1 (the right piece is added below)
-      if (w.b0 > cursor) newPiece(cursor, w.b0);  // a gap: the new one's
-      cursor = w.b1;
-      if (sameSource(in, w, edgeLength)) {  // the same geodesic arriving again: keep the old
-        oldPiece(w);
-        out.push_back(w);
-      } else {
-        oldPiece(w);  // as cut by step 1; keepShorter may cut it further
-        // (The scan saw the same cut: only an interval after a D2 overlap, which ends the scan,
-        // is cut differently.)
-        const std::size_t reachedIndex = k - j0;
-        if (reachedIndex < scan.lostPrefix) {
-          out.push_back(w);
-        } else {
-          keepShorter(in, w,
-                      reachedIndex == scan.lostPrefix && scan.stopSampled
-                          ? scan.stop
-                          : sampleWinners(in, w, w.b0, w.b1, edgeLength),
-                      edgeLength, report, out, newPiece, oldPiece);
-        }
-      }
-      if (hasRight) {  // 1.4's right piece
-        incomingDone = true;
-        out.push_back(before);
-        Interval& right = out.back();
-        right.b0 = in.b1;
-        oldPiece(right);
-      }
-    }
-    finishIncoming();
-
-    // Steps 3–5 work on the buffer through a raw pointer and a count: writes to the intervals'
-    // one-byte fields may alias anything, which would make every L.size() and L[i] reload the
-    // vector's own pointers.
-    Interval* const L = out.data();
-    m = out.size();
-    const bool atFront = s0 == 0, atBack = s1 == n;
-    const Interval* const outerPrev = atFront ? nullptr : &list_[s0 - 1];
-    const Interval* const outerNext = atBack ? nullptr : &list_[s1];
-    // No interval of the slice can be a D1 sliver unless it is shorter than ε at the largest
-    // length scale around (tinyLengthBetween takes ε or a ray-end precision, kRayEndRel <=
-    // kTinyIntervalRel, of the interval or a neighbour; steps 3–5 move ranges, never sources):
-    // most of a solve's intervals are told apart by one comparison.
-    double largestScale = edgeLength, shortest = edgeLength;
-    for (std::size_t k = 0; k < m; ++k) {
-      largestScale = std::max(largestScale, intervalLengthScale(L[k], edgeLength));
-      shortest = std::min(shortest, L[k].length());
-    }
-    if (outerPrev != nullptr)
-      largestScale = std::max(largestScale, intervalLengthScale(*outerPrev, edgeLength));
-    if (outerNext != nullptr)
-      largestScale = std::max(largestScale, intervalLengthScale(*outerNext, edgeLength));
-    const double sliverBound = tol::kTinyIntervalRel * largestScale;
-    // Steps 3–5 only move ends outwards or join neighbours, so with no interval below the bound
-    // now, step 3 finds nothing in any pass.
-    const bool mayHaveSlivers = shortest < sliverBound;
-
-    // Steps 3–5 repeat while step 4 or 5 changes anything: an interval that grows over a sewn
-    // gap can come to touch a coarser neighbour and be a D1 sliver next to it
-    // (corpus/fuzz_edge_update/regress/no-tiny-interval-short-edge-window-not-sewn-to-a-near-
-    // neighbour), and one that step 5 merges with a piece of a near-equal source carries its own
-    // function over the piece's range, where it may take a sliver beside it (canTakeSliver) that
-    // the piece could not (corpus/fuzz_edge_update/regress/no-tiny-interval-step-5-merge-makes-a-
-    // sliver-takeable-after-step-3). Each pass sews or resolves what it finds for good, and steps
-    // 3 and 5 only remove, so this ends.
-    for (bool again = true; again;) {
-      again = false;
-      // --- Step 3: remove tiny intervals (D1), merging each into a neighbour that may grow over
-      //     it (canTakeSliver); one no neighbour may take is kept. A neighbour grown this way may
-      //     itself still be tiny next to a coarser one: repeat until nothing is (each pass removes
-      //     at least one interval, so this ends). An interval's ε depends on its pseudo-source
-      //     only, which merging does not change.
-      for (bool removed = mayHaveSlivers; removed;) {
-        removed = false;
-        std::size_t w = 0;
-        for (std::size_t r = 0; r < m; ++r) {
-          const double length = L[r].length();
-          if (length >= sliverBound) {  // no D1 threshold reaches this far (see sliverBound)
-            if (w != r) L[w] = L[r];
-            ++w;
-            continue;
-          }
-          // L[r]'s neighbours: the last one kept and the next one, or the slice's outer ones (one
-          // of those taking L[r] makes step 3 remove it here; the update is then done again
-          // over a wider slice, where the neighbour can grow).
-          const Interval* const prev = w > 0 ? &L[w - 1] : outerPrev;
-          const Interval* const next = r + 1 < m ? &L[r + 1] : outerNext;
-          // ε of L[r] itself, or a touching neighbour's ray-end precision when larger: a sliver
-          // within that of a coarser window's end may be its rounding (tol::kRayEndRel). Not the
-          // neighbour's whole ε: a longer sliver can be the start of a near saddle's shadow,
-          // which fans out downstream where the far rays never reach. The checker applies the
-          // same rule (tinyLengthInList) to the whole list, so the outer neighbours count here.
-          const double tiny = tinyLengthBetween(prev, L[r], next, edgeLength);
-          // An edge shorter than ε has nothing but D1 slivers: the last one left is the edge's
-          // distance to the precision its source allows, and step 4 sews it to both ends.
-          // Removing it too left the edge uncovered (corpus/fuzz_two_faces/regress/
-          // full-coverage-edge-shorter-than-epsilon-lost-its-last-interval).
-          const bool belowTiny = length < tiny;
-          const bool lastOnShortEdge =
-              belowTiny && edgeLength < tiny &&
-              (prev == nullptr || prev->b1 < L[r].b0 - tinyLength(*prev, edgeLength)) &&
-              (next == nullptr || next->b0 > L[r].b1 + tinyLength(*next, edgeLength));
-          // Only a sliver asks its neighbours (two square roots each, for most intervals of a
-          // solve otherwise).
-          const bool sliver = belowTiny && !lastOnShortEdge;
-          const bool prevTakes = sliver && prev != nullptr && canTakeSliver(*prev, L[r], edgeLength);
-          const bool nextTakes = sliver && next != nullptr && canTakeSliver(*next, L[r], edgeLength);
-          if (!(prevTakes || nextTakes)) {
-            if (w != r) L[w] = L[r];
-            ++w;
-            continue;
-          }
-          removed = true;
-          ++report.degeneracies[DegeneracyKind::D1];
-          const Interval t = L[r];
-          report.removedTiny.emplace_back(t.b0, t.b1);
-          // An Eq. 1 breakpoint at an end of the removed sliver now joins a neighbour that grew
-          // over the sliver to the one beyond, which Eq. 1 never made equal: it is no breakpoint
-          // any more
-          // (corpus/fuzz_edge_update/regress/continuous-at-eq1-breakpoint-of-removed-sliver).
-          std::erase_if(report.eq1Breakpoints, [&](double x) { return x == t.b0 || x == t.b1; });
-          // Prefer the neighbour with the coarser scale: merging into the same-scale one would only
-          // leave a sliver as thin as before beside the coarse one. Between equal scales, prefer
-          // the one that needs no second propagation (a pending one for a pending sliver).
-          const bool prevTouches = w > 0 && prevTakes;
-          const bool nextTouches = r + 1 < m && nextTakes;
-          bool intoNext = nextTouches && !prevTouches;
-          if (nextTouches && prevTouches) {
-            const double tinyPrev = tinyLength(L[w - 1], edgeLength);
-            const double tinyNext = tinyLength(L[r + 1], edgeLength);
-            intoNext = tinyNext > tinyPrev || (tinyNext == tinyPrev && t.pending() &&
-                                               L[r + 1].pending() && !L[w - 1].pending());
-          }
-          if (intoNext || prevTouches) {
-            Interval& into = intoNext ? L[r + 1] : L[w - 1];
-            if (intoNext) {
-              setRange(into, std::min(into.b0, t.b0), into.b1);
-            } else {
-              setRange(into, into.b0, std::max(into.b1, t.b1));
-            }
-            if (t.pending() && !into.pending()) grewUnpropagated(into);
-          }
-        }
-        m = w;
-      }
-
-      // --- Step 4: sew gaps shorter than ε (D3). The paper sews a gap at its midpoint; where
-      //     only one side is still pending we move that side's end across the whole gap instead,
-      //     so the propagated side need not be propagated again (either way each point of the gap
-      //     takes a neighbour's value, which is all step 4 promises). The edge's ends count as
-      //     neighbours.
-      if (m > 0) {
-        Interval& front = L[0];
-        if (atFront && front.b0 > 0.0 && front.b0 < sewLength(front, edgeLength)) {
-          ++report.degeneracies[DegeneracyKind::D3];
-          if (!front.pending()) grewUnpropagated(front);
-          setRange(front, 0.0, front.b1);
-          again = true;
-        }
-        Interval& back = L[m - 1];
-        if (atBack && back.b1 < edgeLength && edgeLength - back.b1 < sewLength(back, edgeLength)) {
-          ++report.degeneracies[DegeneracyKind::D3];
-          if (!back.pending()) grewUnpropagated(back);
-          setRange(back, back.b0, edgeLength);
-          again = true;
-        }
-        for (std::size_t k = 0; k + 1 < m; ++k) {
-          Interval& p = L[k];
-          Interval& q = L[k + 1];
-          const double gap = q.b0 - p.b1;
-          if (gap == 0.0) continue;
-          // No overlap reaches step 4: the slice comes from a list without one, step 1 resolves
-          // every D2 at the incoming ends and cuts everything else exactly, step 3 grows a
-          // neighbour exactly to a removed sliver's end, and steps 4 and 5 only close gaps. (The
-          // D2 branch once here was reached by no test, property or corpus file: mutant
-          // f1918372, docs/mutation.md.)
-          GEODEX_CHECK(gap > 0.0, "step 4 met neighbours overlapping by " << -gap << " on ["
-                                      << q.b0 << ", " << p.b1 << "]");
-          // (A flat vertex's shadow, kFlatVertexAngle × the rays' length, is below sewLength;
-          // wider shadows are closed when the wavefront has passed: tol::kShadowSewRel.)
-          if (!(gap > 0.0) || gap >= std::max(sewLength(p, edgeLength), sewLength(q, edgeLength)))
-            continue;
-          ++report.degeneracies[DegeneracyKind::D3];
-          again = true;
-          if (p.pending() && !q.pending()) {
-            setRange(p, p.b0, q.b0);
-          } else if (q.pending() && !p.pending()) {
-            setRange(q, p.b1, q.b1);
-          } else {
-            const double mid = 0.5 * (p.b1 + q.b0);
-            if (!p.pending()) grewUnpropagated(p);
-            if (!q.pending()) grewUnpropagated(q);
-            setRange(p, p.b0, mid);
-            setRange(q, mid, q.b1);
-          }
-        }
-      }
-
-      // --- Step 5: merge neighbours with the same pseudo-source (and the same propagation
-      //     state: merging a propagated interval into a pending one would propagate it a second
-      //     time). The merged interval keeps the first one's function: only where the second's
-      //     was not the very same can steps 3 and 4 find something new.
-      std::size_t w = 0;
-      for (std::size_t r = 0; r < m; ++r) {
-        if (w > 0 && L[w - 1].b1 == L[r].b0 && L[w - 1].pending() == L[r].pending() &&
-            sameSource(L[w - 1], L[r], edgeLength)) {
-          setRange(L[w - 1], L[w - 1].b0, L[r].b1);
-          L[w - 1].flags |= static_cast<std::uint8_t>(L[r].flags & kFromIncoming);
-          if (L[w - 1].source != L[r].source || L[w - 1].sigma != L[r].sigma) again = true;
-          continue;
-        }
-        if (w != r) L[w] = L[r];
-        ++w;
-      }
-      m = w;
-    }
-
-    for (std::size_t k = 0; k < m; ++k) {
-      if (L[k].flags & kFromIncoming) report.incomingSurvived = true;
-      L[k].flags &= static_cast<std::uint8_t>(~kFromIncoming);
-    }
-    out.resize(m);
-
-    // The outer neighbour's relation to the slice's first interval (a gap to sew, a sliver to
-    // take, a source to merge with) depends on that interval's start, function and state only:
-    // where steps 3–5 moved only its inner end, a wider slice finds nothing more. (One in eight of
-    // bunny00's updates was done twice when any change to it widened the slice.) The start moves
-    // when step 3 removes the first interval; the function alone does not tell it, for the next
-    // one may have the same source behind a gap (corpus/fuzz_edge_update/regress/pointwise-min-
-    // sliver-taken-by-the-outer-neighbour-before-a-gap-to-the-same-source). A sliver the outer
-    // neighbour takes moves the start too; one an inner neighbour takes changes the function
-    // (Algorithm2.AGapBesideTheUpdateIsSewnWhenTheIntervalNextToItGoesToACoarserWindow).
-    const auto sameFunction = [](const Interval& a, const Interval& b) {
-      return a.source == b.source && a.sigma == b.sigma && a.side == b.side &&
-             a.origin == b.origin && a.pending() == b.pending();
-    };
-    const bool frontKept = s0 == 0 || (m > 0 && out.front().b0 == list_[s0].b0 &&
-                                       sameFunction(out.front(), list_[s0]));
-    const bool backKept = s1 == n || (m > 0 && out[m - 1].b1 == list_[s1 - 1].b1 &&
-                                      sameFunction(out[m - 1], list_[s1 - 1]));
+    splitAndKeepShorter(list.subspan(s0, s1 - s0), j0 - s0, incoming, scan, edgeLength, report,
+                        out);
+    s = Slice{out.data(), out.size(), s0 == 0 ? nullptr : &list[s0 - 1],
+              s1 == n ? nullptr : &list[s1], edgeLength};
+    report.incomingSurvived = repairSlice(s, report);
+    out.resize(s.m);
+    const bool frontKept = s0 == 0 || (s.m > 0 && keepsTheOuterEnd(out.front(), list[s0],
+                                                                   out.front().b0, list[s0].b0));
+    const bool backKept =
+        s1 == n ||
+        (s.m > 0 && keepsTheOuterEnd(out[s.m - 1], list[s1 - 1], out[s.m - 1].b1, list[s1 - 1].b1));
     if (frontKept && backKept) break;
     if (!frontKept) s0 = s0 >= 2 ? s0 - 2 : 0;
     if (!backKept) s1 = std::min(n, s1 + 2);
     report.clear();
   }
 
-  // --- Splice the rewritten slice back in place of [s0, s1).
-  const std::size_t oldCount = s1 - s0, newCount = m, oldSize = list_.size();
-  Interval* data = list_.data();
-  if (newCount > oldCount) {
-    const std::size_t newSize = oldSize + newCount - oldCount;
-    if (newSize > list_.capacity()) {
-      // To the next size class, a quarter up, not the default doubling: the lists are most of
-      // the solver's memory.
-      list_.reserve(IntervalPool::capacityFor(newSize));
-    }
-    list_.resize(newSize);
-    data = list_.data();
-    std::copy_backward(data + s1, data + oldSize, data + newSize);
-  } else if (newCount < oldCount) {
-    std::copy(data + s1, data + oldSize, data + s0 + newCount);
-    list_.resize(oldSize - (oldCount - newCount));
-  }
-  std::copy(out.begin(), out.begin() + static_cast<std::ptrdiff_t>(newCount), data + s0);
+  spliceSlice(list_, s0, s1, out);
   report.first = s0;
-  report.last = s0 + newCount;
+  report.last = s0 + out.size();
   out.clear();
 }
 
