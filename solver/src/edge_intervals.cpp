@@ -200,6 +200,24 @@ bool incomingLosesEverywhere(const Interval& in, std::span<const Interval> reach
   return cursor >= in.b1;
 }
 
+// Where steps 1 and 2 write the slice's new intervals and steps 3–5 work on them: a raw pointer and
+// a count over storage the caller sized (piecesBound). Not a vector: writes to the intervals'
+// one-byte fields may alias anything, which made every push_back reload the vector's own pointers
+// (its capacity checks and copies were a tenth of a solve's instructions).
+struct Pieces {
+  Interval* data;
+  std::size_t size;
+  std::size_t capacity;
+  void push(const Interval& w) {
+    GEODEX_CHECK(size < capacity, "steps 1 and 2 made more than " << capacity << " pieces");
+    data[size++] = w;
+  }
+};
+// Steps 1 and 2 make at most seven pieces of an old interval (a piece before the incoming range,
+// a gap of the incoming one before it, keepShorter's up to four, the piece after the range) and
+// one of the incoming range after the last.
+constexpr std::size_t piecesBound(std::size_t sliceSize) { return 7 * sliceSize + 1; }
+
 // ===  Step 2 for one old interval ================================================================
 // Where on old's range [old.b0, old.b1] is the incoming interval shorter? Appends the pieces, in
 // order, to `out`: pieces of the old interval (the first keeps old's state; all are marked
@@ -215,8 +233,8 @@ bool incomingLosesEverywhere(const Interval& in, std::span<const Interval> reach
 // the change is located by bisection on the exact difference of the two distance functions.
 template <typename NewPiece, typename OldPiece>
 void keepShorter(const Interval& in, const Interval& old, const SampledWinners& sampled,
-                 double edgeLength, EdgeUpdateReport& report, std::vector<Interval>& out,
-                 NewPiece&& newPiece, OldPiece&& oldPiece) {
+                 double edgeLength, EdgeUpdateReport& report, Pieces& out, NewPiece&& newPiece,
+                 OldPiece&& oldPiece) {
   const double lo = old.b0, hi = old.b1;
   const auto& sample = sampled.sample;
   const auto& f = sampled.f;
@@ -227,7 +245,7 @@ void keepShorter(const Interval& in, const Interval& old, const SampledWinners& 
     if (wins[0]) {
       newPiece(lo, hi);
     } else {
-      out.push_back(old);  // as the caller cut it
+      out.push(old);  // as the caller cut it
     }
     return;
   }
@@ -284,7 +302,7 @@ void keepShorter(const Interval& in, const Interval& old, const SampledWinners& 
       w.b0 = cut[k];
       w.b1 = cut[k + 1];
       oldPiece(w);
-      out.push_back(w);
+      out.push(w);
     }
   }
 }
@@ -399,16 +417,15 @@ constexpr std::uint8_t kFromIncoming = 4;
 // `out`; `scan` holds what incomingLosesEverywhere already decided about the reached ones.
 void splitAndKeepShorter(std::span<const Interval> slice, std::size_t firstReached,
                          const Interval& incoming, const ReachedScan& scan, double edgeLength,
-                         EdgeUpdateReport& report, std::vector<Interval>& out) {
+                         EdgeUpdateReport& report, Pieces& out) {
   Interval in = incoming;
   in.flags = static_cast<std::uint8_t>((incoming.flags & Interval::kPending) | Interval::kChanged |
                                        kFromIncoming);
   auto newPiece = [&](double lo, double hi) {  // appends the incoming interval's piece [lo, hi]
-    out.push_back(in);
-    out.back().b0 = lo;
-    out.back().b1 = hi;
+    out.push(in);
+    out.data[out.size - 1].b0 = lo;
+    out.data[out.size - 1].b1 = hi;
   };
-  out.clear();
   double cursor = in.b0;      // the incoming range up to here is accounted for
   bool incomingDone = false;  // the incoming interval's pieces are all in `out`
   auto finishIncoming = [&] {
@@ -418,12 +435,12 @@ void splitAndKeepShorter(std::span<const Interval> slice, std::size_t firstReach
   for (std::size_t k = 0; k < slice.size(); ++k) {
     const Interval& before = slice[k];
     if (before.b1 <= in.b0) {  // before the incoming range
-      out.push_back(before);
+      out.push(before);
       continue;
     }
     if (incomingDone || before.b0 >= in.b1) {  // after it
       finishIncoming();
-      out.push_back(before);
+      out.push(before);
       continue;
     }
     Interval w = before;
@@ -439,7 +456,7 @@ void splitAndKeepShorter(std::span<const Interval> slice, std::size_t firstReach
       w.b1 = meet;
       in.b0 = cursor = meet;
       oldPiece(w);
-      out.push_back(w);
+      out.push(w);
       continue;
     }
     if (overlapsEndByD2(w, in, overlapTiny)) {  // D2 at the new one's end
@@ -449,14 +466,14 @@ void splitAndKeepShorter(std::span<const Interval> slice, std::size_t firstReach
       in.b1 = meet;
       oldPiece(w);
       finishIncoming();
-      out.push_back(w);
+      out.push(w);
       continue;
     }
     if (w.b0 < in.b0) {  // 1.3: separate at interb0
       Interval left = w;
       left.b1 = in.b0;
       oldPiece(left);
-      out.push_back(left);
+      out.push(left);
       w.b0 = in.b0;
     }
     const bool hasRight = w.b1 > in.b1;
@@ -465,14 +482,14 @@ void splitAndKeepShorter(std::span<const Interval> slice, std::size_t firstReach
     cursor = w.b1;
     if (sameSource(in, w, edgeLength)) {  // the same geodesic arriving again: keep the old
       oldPiece(w);
-      out.push_back(w);
+      out.push(w);
     } else {
       oldPiece(w);  // as cut by step 1; keepShorter may cut it further
       // (The scan saw the same cut: only an interval after a D2 overlap, which ends the scan,
       // is cut differently.)
       const std::size_t reachedIndex = k - firstReached;
       if (reachedIndex < scan.lostPrefix) {
-        out.push_back(w);
+        out.push(w);
       } else {
         keepShorter(in, w,
                     reachedIndex == scan.lostPrefix && scan.stopSampled
@@ -483,8 +500,8 @@ void splitAndKeepShorter(std::span<const Interval> slice, std::size_t firstReach
     }
     if (hasRight) {  // 1.4's right piece
       incomingDone = true;
-      out.push_back(before);
-      Interval& right = out.back();
+      out.push(before);
+      Interval& right = out.data[out.size - 1];
       right.b0 = in.b1;
       oldPiece(right);
     }
@@ -713,9 +730,9 @@ bool repairSlice(Slice& s, EdgeUpdateReport& report) {
   return incomingSurvived;
 }
 
-// Whether `now`, the rewritten slice's first (last) interval, leaves the outer neighbour as
-// `was`, the slice's first (last) before the update, did. The outer neighbour's relation to it (a
-// gap to sew, a sliver to take, a source to merge with) depends on its outer end, function and
+// Whether `now`, the rewritten slice's first (`front`) or last interval, leaves the outer neighbour
+// as `was`, the slice's first (last) before the update, did. The outer neighbour's relation to it
+// (a gap to sew, a sliver to take, a source to merge with) depends on its outer end, function and
 // state only: where steps 3–5 moved only its inner end, a wider slice finds nothing more. (One in
 // eight of bunny00's updates was done twice when any change to it widened the slice.) The outer
 // end moves when step 3 removes the first interval; the function alone does not tell it, for the
@@ -723,31 +740,37 @@ bool repairSlice(Slice& s, EdgeUpdateReport& report) {
 // sliver-taken-by-the-outer-neighbour-before-a-gap-to-the-same-source). A sliver the outer
 // neighbour takes moves the end too; one an inner neighbour takes changes the function
 // (Algorithm2.AGapBesideTheUpdateIsSewnWhenTheIntervalNextToItGoesToACoarserWindow).
-bool keepsTheOuterEnd(const Interval& now, const Interval& was, double nowEnd, double wasEnd) {
-  return nowEnd == wasEnd && now.source == was.source && now.sigma == was.sigma &&
-         now.side == was.side && now.origin == was.origin && now.pending() == was.pending();
+bool keepsTheOuterEnd(const Interval& now, const Interval& was, bool front) {
+  return (front ? now.b0 == was.b0 : now.b1 == was.b1) && now.source == was.source &&
+         now.sigma == was.sigma && now.side == was.side && now.origin == was.origin &&
+         now.pending() == was.pending();
 }
 
-// Replaces the intervals [s0, s1) of `list` by `rewritten`.
+// Replaces the intervals [s0, s1) of `list` by `rewritten`, moving the list's tail once.
 void spliceSlice(std::vector<Interval, IntervalAllocator<Interval>>& list, std::size_t s0,
                  std::size_t s1, std::span<const Interval> rewritten) {
-  const std::size_t oldCount = s1 - s0, newCount = rewritten.size(), oldSize = list.size();
-  Interval* data = list.data();
-  if (newCount > oldCount) {
-    const std::size_t newSize = oldSize + newCount - oldCount;
-    if (newSize > list.capacity()) {
-      // To the next size class, a quarter up, not the default doubling: the lists are most of
-      // the solver's memory.
-      list.reserve(IntervalPool::capacityFor(newSize));
-    }
-    list.resize(newSize);
-    data = list.data();
-    std::copy_backward(data + s1, data + oldSize, data + newSize);
-  } else if (newCount < oldCount) {
-    std::copy(data + s1, data + oldSize, data + s0 + newCount);
-    list.resize(oldSize - (oldCount - newCount));
+  const std::size_t oldCount = s1 - s0, newCount = rewritten.size();
+  const auto at = [&](std::size_t i) { return list.begin() + static_cast<std::ptrdiff_t>(i); };
+  if (newCount > oldCount && list.size() + (newCount - oldCount) > list.capacity()) {
+    // To the next size class, a quarter up, not the default doubling: the lists are most of the
+    // solver's memory. Built in the new block directly: reserve, resize and a shift would copy
+    // the tail three times (a list grows this way at six in ten of fandisk's updates).
+    std::vector<Interval, IntervalAllocator<Interval>> grown(list.get_allocator());
+    grown.reserve(IntervalPool::capacityFor(list.size() + (newCount - oldCount)));
+    grown.insert(grown.end(), list.begin(), at(s0));
+    grown.insert(grown.end(), rewritten.begin(), rewritten.end());
+    grown.insert(grown.end(), at(s1), list.end());
+    list.swap(grown);
+    return;
   }
-  std::copy(rewritten.begin(), rewritten.end(), data + s0);
+  const std::size_t common = std::min(oldCount, newCount);
+  const auto rest = rewritten.begin() + static_cast<std::ptrdiff_t>(common);
+  std::copy(rewritten.begin(), rest, at(s0));
+  if (newCount > oldCount) {
+    list.insert(at(s1), rest, rewritten.end());
+  } else {
+    list.erase(at(s0 + newCount), at(s1));
+  }
 }
 
 }  // namespace
@@ -785,27 +808,26 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
   std::size_t s1 = std::min(n, j1 + 1);
   Slice s{};
   for (;;) {
+    // (`out` only grows: resize constructs what it adds.)
+    if (out.size() < piecesBound(s1 - s0)) out.resize(piecesBound(s1 - s0));
+    Pieces pieces{out.data(), 0, out.size()};
     splitAndKeepShorter(list.subspan(s0, s1 - s0), j0 - s0, incoming, scan, edgeLength, report,
-                        out);
-    s = Slice{out.data(), out.size(), s0 == 0 ? nullptr : &list[s0 - 1],
+                        pieces);
+    s = Slice{pieces.data, pieces.size, s0 == 0 ? nullptr : &list[s0 - 1],
               s1 == n ? nullptr : &list[s1], edgeLength};
     report.incomingSurvived = repairSlice(s, report);
-    out.resize(s.m);
-    const bool frontKept = s0 == 0 || (s.m > 0 && keepsTheOuterEnd(out.front(), list[s0],
-                                                                   out.front().b0, list[s0].b0));
+    const bool frontKept = s0 == 0 || (s.m > 0 && keepsTheOuterEnd(s.L[0], list[s0], true));
     const bool backKept =
-        s1 == n ||
-        (s.m > 0 && keepsTheOuterEnd(out[s.m - 1], list[s1 - 1], out[s.m - 1].b1, list[s1 - 1].b1));
+        s1 == n || (s.m > 0 && keepsTheOuterEnd(s.L[s.m - 1], list[s1 - 1], false));
     if (frontKept && backKept) break;
     if (!frontKept) s0 = s0 >= 2 ? s0 - 2 : 0;
     if (!backKept) s1 = std::min(n, s1 + 2);
     report.clear();
   }
 
-  spliceSlice(list_, s0, s1, out);
+  spliceSlice(list_, s0, s1, std::span<const Interval>(s.L, s.m));
   report.first = s0;
-  report.last = s0 + out.size();
-  out.clear();
+  report.last = s0 + s.m;
 }
 
 }  // namespace geodex

@@ -186,7 +186,7 @@ class EdgeIntervals {
   /// Algorithm 2: merge `incoming` (range within [0, edgeLength]) into the list. Only the part
   /// of the list the incoming range reaches (plus two neighbours on each side, which steps 3–5 may
   /// touch) is read and rewritten, so an update costs O(log n + overlap), not O(n). `scratch` is
-  /// reused between calls to avoid allocation.
+  /// reused between calls to avoid allocation; what it holds afterwards is unspecified.
   void insert(const Interval& incoming, double edgeLength, EdgeUpdateReport& report,
               std::vector<Interval>& scratch);
 
