@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -659,6 +660,27 @@ TEST(SolverApi, BadSourcesAreRefusedByName) {
   EXPECT_THROW(solver.solve(std::vector<SurfacePoint>{SurfacePoint::onEdge(0, 8, 0.5)}), InputError);
   EXPECT_THROW(solver.solve(std::vector<SurfacePoint>{SurfacePoint::inFace(0, 0.5, 0.5, 0.5)}), InputError);
   EXPECT_THROW(solver.solve(std::vector<SurfacePoint>{SurfacePoint::inFace(99, 1, 0, 0)}), InputError);
+}
+
+// Barycentrics that sum to 1 but are not all in [0, 1] name a point outside the face (or none):
+// refused, not snapped to the corner whose weight passed 1.
+TEST(SolverApi, AFacePointOutsideItsFaceIsRefusedThoughItsBarycentricsSumToOne) {
+  const Mesh mesh(verify::gridMesh(2, 2, 1.0, 1.0));
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (const SurfacePoint& p :
+       {SurfacePoint::inFace(0, 1.5, -0.5, 0.0), SurfacePoint::inFace(0, -0.25, 0.5, 0.75),
+        SurfacePoint::inFace(0, nan, 0.5, 0.5)}) {
+    SCOPED_TRACE(formatSurfacePoint(p));
+    EXPECT_THROW(resolve(mesh, p), InputError);
+  }
+}
+
+// A number too large for a double is refused, not read as whatever the parser left behind.
+TEST(SolverApi, APointSpecWithANumberOutOfRangeIsRefused) {
+  EXPECT_THROW(parseSurfacePoint("e:0,1,1e999"), InputError);
+  EXPECT_THROW(parseSurfacePoint("f:0,1e999,0,0"), InputError);
+  EXPECT_THROW(parseSurfacePoint("f:0,1e-999999,0,1"), InputError);
+  EXPECT_EQ(parseSurfacePoint("e:0,1,0.25").t, 0.25);
 }
 
 }  // namespace
