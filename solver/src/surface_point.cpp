@@ -124,8 +124,9 @@ ResolvedPoint resolve(const Mesh& mesh, const SurfacePoint& p) {
         throw InputError("bad-point", what() + ": face " + std::to_string(p.face) + " does not exist (the mesh has " +
                                           std::to_string(mesh.numFaces()) + " faces)");
       const auto& b = p.bary;
+      // (isfinite first: comparing a NaN raises FE_INVALID, which the debug tests trap.)
       for (double x : b)
-        if (!(x >= 0.0) || !std::isfinite(x)) throw InputError("bad-point", what() + ": barycentrics must be finite and >= 0");
+        if (!std::isfinite(x) || x < 0.0) throw InputError("bad-point", what() + ": barycentrics must be finite and >= 0");
       if (std::abs(b[0] + b[1] + b[2] - 1.0) > 1e-9)
         throw InputError("bad-point", what() + ": barycentrics must sum to 1");
       const auto& corners = mesh.face(p.face);
