@@ -54,6 +54,8 @@ void writeDegeneracyTable(std::ostream& out, const DegeneracyCounters& counters)
   out << "mesh-level cases: " << counters.zeroAreaFaces << " windows through zero-area faces, "
       << counters.sourceOnEdgeLineOutside << " with the source on the edge's line outside, "
       << counters.childEdgesSeenFromOutside << " child edges seen from outside the face\n";
+  out << "D1 at a vertex: " << counters.d1FansRelayed
+      << " vertices relaying the fan of a sliver removed there\n";
 }
 
 }  // namespace geodex::cli

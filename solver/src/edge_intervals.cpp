@@ -599,6 +599,15 @@ void removeTinyIntervals(Slice& s, double sliverBound, EdgeUpdateReport& report)
           setRange(into, into.b0, std::max(into.b1, t.b1));
         }
         if (t.pending() && !into.pending()) grewUnpropagated(into);
+        // The neighbour's rays cover the sliver's range, but beyond a vertex the sliver ends at,
+        // a nearer source fans out wider than they do: the solver relays that fan through the
+        // vertex (corpus/fuzz_solver/regress/vertex-agreement-d1-sliver-at-a-vertex-loses-its-
+        // fan-beyond-it).
+        if (!sameSource(into, t, edgeLength)) {
+          const double tiny = tinyLength(t, edgeLength);
+          if (t.b0 <= tiny) report.fanLostAtVertex |= 1;
+          if (t.b1 >= edgeLength - tiny) report.fanLostAtVertex |= 2;
+        }
       }
     }
     s.m = w;

@@ -62,6 +62,8 @@ void GeodesicSolver::reset() {
   pool_.recycle();
   edges_.assign(mesh_.numEdges(), EdgeIntervals(&pool_));
   vertexDistance_.assign(mesh_.numVertices(), kInfinity);
+  emitsWindows_.resize(mesh_.numVertices());
+  for (Index v = 0; v < mesh_.numVertices(); ++v) emitsWindows_[v] = mesh_.isPseudoSourceVertex(v);
   pendingKey_.assign(2 * mesh_.numEdges(), kInfinity);
   sources_.clear();
   queue_.reset(queueBucketWidth_, mesh_.numEdges());  // a ring of at most one bucket per edge
@@ -412,6 +414,10 @@ void GeodesicSolver::addInterval(Index edge, const Interval& w, const Fig6Branch
   const auto intervals = list.intervals();
   if (!intervals.empty()) {
     const Edge& E = mesh_.edge(edge);
+    if (report_.fanLostAtVertex != 0) [[unlikely]] {
+      for (int k = 0; k < 2; ++k)
+        if (report_.fanLostAtVertex & (1 << k)) relayFanThroughVertex(E.vertex[k]);
+    }
     if (report_.first == 0 && intervals.front().b0 == 0.0)
       updateVertex(E.vertex[0], intervals.front().distanceAt(0.0));
     if (report_.last == intervals.size() && intervals.back().b1 == length)
@@ -427,7 +433,21 @@ void GeodesicSolver::updateVertex(Index v, double d) {
   const double bar = current == kInfinity ? kInfinity : current - tol::kTieRel * current;
   if (!(d < bar)) return;
   current = d;
-  if (mesh_.isPseudoSourceVertex(v)) queue_.push(QueueEntry::pseudoSource(v, d));
+  if (emitsWindows_[v]) queue_.push(QueueEntry::pseudoSource(v, d));
+}
+
+// Step 3 took a D1 sliver ending at v into a neighbour of another pseudo-source. On its range the
+// neighbour is as short, to D1's slack; beyond v the sliver's source, when nearer, fans out wider
+// than the neighbour's rays, and what only it reached is left to longer windows: behind a hole's
+// corner, on a line through two more vertices, a thin wedge beyond them came out 9 % too long
+// (corpus/fuzz_solver/regress/vertex-agreement-d1-sliver-at-a-vertex-loses-its-fan-beyond-it).
+// v emits windows from then on, as a saddle does: a path through v is a real path, and one to
+// where the sliver's rays reach is at most twice the sliver's length longer than theirs.
+void GeodesicSolver::relayFanThroughVertex(Index v) {
+  if (emitsWindows_[v]) return;
+  emitsWindows_[v] = 1;
+  ++counters_.d1FansRelayed;
+  if (vertexDistance_[v] != kInfinity) queue_.push(QueueEntry::pseudoSource(v, vertexDistance_[v]));
 }
 
 void GeodesicSolver::finish(const SolveOptions& options, double radius) {

@@ -394,5 +394,19 @@ TEST(SolverRegression, AFarWindowIsNotSewnOverASaddlesShadow) {
   expectCheckedSolveAgreesAtVertex("far-source-sewn-over-a-saddle-shadow.off", "v:16", 5);
 }
 
+// Found by fuzz_solver on 2026-11-26 (corpus/fuzz_solver/regress/vertex-agreement-d1-sliver-at-a-
+// vertex-loses-its-fan-beyond-it), at 1.7e156 times the scale of tests/data/regression/hole-corner-
+// wedge-through-two-flat-vertices.off and as wrong at this one. Vertex 22's shadow wedge (a hole's
+// corner) passes 1e-11 rad under the flat vertex 14: on edge 4-14 it arrived as a sliver 2.6e-12
+// long at vertex 14, below its ε, and step 3 merged it into the source's direct window, whose rays
+// from 4x farther away fan out less beyond vertex 14. The strip of edge 5-15 beside vertex 15 that
+// only the wedge reaches went to vertex 6's window: 0.764 at vertex 15, where D(15) = 0.699 (the
+// straight line past the corner). A vertex where step 3 removes a sliver of another source now
+// relays its fan as a pseudo-source.
+TEST(SolverRegression, ASliverRemovedAtAVertexHasItsFanRelayedThroughIt) {
+  expectCheckedSolveAgreesAtVertex("hole-corner-wedge-through-two-flat-vertices.off",
+                                   "e:28,37,0.50000000006", 15);
+}
+
 }  // namespace
 }  // namespace geodex::proptest

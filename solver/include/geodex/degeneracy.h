@@ -49,6 +49,10 @@ struct DegeneracyCounters {
   /// Children dropped because their source lies clearly outside the face across their edge
   /// (the rays cannot leave through it; see GeodesicSolver::propagate).
   std::uint64_t childEdgesSeenFromOutside = 0;
+  /// D1 slivers removed at an edge's vertex into a neighbour of another pseudo-source, whose
+  /// vertex then relays the fan they would have made (GeodesicSolver::relayFanThroughVertex):
+  /// the vertices made pseudo-sources this way.
+  std::uint64_t d1FansRelayed = 0;
 
   std::uint64_t& operator[](DegeneracyKind k) { return count[static_cast<std::size_t>(k)]; }
   std::uint64_t operator[](DegeneracyKind k) const { return count[static_cast<std::size_t>(k)]; }
@@ -61,6 +65,7 @@ struct DegeneracyCounters {
     zeroAreaFaces += o.zeroAreaFaces;
     sourceOnEdgeLineOutside += o.sourceOnEdgeLineOutside;
     childEdgesSeenFromOutside += o.childEdgesSeenFromOutside;
+    d1FansRelayed += o.d1FansRelayed;
     return *this;
   }
 };

@@ -40,12 +40,16 @@ struct EdgeUpdateReport {
   std::vector<std::pair<double, double>> removedTiny;
   /// Whether any part of the incoming interval survived.
   bool incomingSurvived = false;
+  /// Bit k: step 3 removed, at the edge's vertex k, a D1 sliver that a neighbour of another
+  /// pseudo-source took (see GeodesicSolver::relayFanThroughVertex).
+  std::uint8_t fanLostAtVertex = 0;
   DegeneracyCounters degeneracies;  ///< D1–D4 found in this update
   void clear() {
     first = last = 0;
     eq1Breakpoints.clear();
     removedTiny.clear();
     incomingSurvived = false;
+    fanLostAtVertex = 0;
     degeneracies = {};
   }
 };

@@ -112,6 +112,7 @@ class GeodesicSolver {
   void queuePending(Index edge, const Interval& w);
   void prefetchAhead() const;
   void updateVertex(Index v, double d);
+  void relayFanThroughVertex(Index v);
   void createPseudoSourceWindows(Index v, double sigma, std::int32_t origin, int depth = 0,
                                  Index from = kNoIndex);
   void seedFaceFromPoint(Index f, const ResolvedPoint& p, Index skip, double sigma,
@@ -152,6 +153,9 @@ class GeodesicSolver {
   IntervalPool pool_;  // before edges_: their lists live in it
   std::vector<EdgeIntervals> edges_;
   std::vector<double> vertexDistance_;             // mesh units
+  // Whether a vertex emits windows when reached: the mesh's pseudo-source vertices, and those
+  // relayFanThroughVertex adds during a solve.
+  std::vector<std::uint8_t> emitsWindows_;
   std::vector<double> vertexDistanceInFileUnits_;  // the same × mesh_.unit(), when that is not 1
   double radius_ = kInfinity;                      // stats_.radius in mesh units
   std::vector<ResolvedPoint> sources_;
