@@ -171,6 +171,30 @@ TEST(Fig6, NearCollinearWithinToleranceIsG2AndBeyondIsNot) {
   EXPECT_EQ(propagateLocal(window(0.5, 1.5, s - 1e-6 * len * normal)).branch, Fig6Branch::LeftOfWedge);
 }
 
+// Collinear means a sine below 1e-11 (tolerance.h, kCollinearSin), on both mirrored rays: a source
+// a tenth of that off the line through a window end and the apex is G2 (G3), one ten times it is
+// on a side. Written out, not read from the tolerance, so that moving it is seen; a wider
+// "collinear" bends rays through the apex that pass beside it.
+TEST(Fig6, TheRaysThroughEitherWindowEndAreCollinearWithTheApexToASineOf1eMinus11) {
+  // G2's ray: s = (0,-1), b0 = (0.5,0), v1 = (1,1); G3's is its mirror image in x = 1. The unit
+  // normals to the two lines point away from the window's inside at s.
+  const Vec2 sG2(0.0, -1.0), sG3(2.0, -1.0);
+  const Vec2 nG2 = Vec2(1.0, -0.5).normalized(), nG3 = Vec2(-1.0, -0.5).normalized();
+  const double len = std::sqrt(1.25);  // |s - b| = |v1 - b|: an offset δ len is a sine of δ
+  for (const double sine : {1e-12, 1e-10}) {
+    SCOPED_TRACE(sine);
+    const bool collinear = sine < 1e-11;
+    EXPECT_EQ(propagateLocal(window(0.5, 1.5, sG2 + sine * len * nG2)).branch,
+              collinear ? Fig6Branch::G2 : Fig6Branch::InsideWedge);
+    EXPECT_EQ(propagateLocal(window(0.5, 1.5, sG2 - sine * len * nG2)).branch,
+              collinear ? Fig6Branch::G2 : Fig6Branch::LeftOfWedge);
+    EXPECT_EQ(propagateLocal(window(0.5, 1.5, sG3 + sine * len * nG3)).branch,
+              collinear ? Fig6Branch::G3 : Fig6Branch::InsideWedge);
+    EXPECT_EQ(propagateLocal(window(0.5, 1.5, sG3 - sine * len * nG3)).branch,
+              collinear ? Fig6Branch::G3 : Fig6Branch::RightOfWedge);
+  }
+}
+
 TEST(Fig6, DecisionsAreScaleInvariant) {
   const LocalWindow base = window(0.5, 1.5, Vec2(0.0, -1.0));
   for (double scale : {1e-6, 1e6}) {
