@@ -152,9 +152,15 @@ void GeodesicSolver::seedSource(const ResolvedPoint& p, std::size_t number) {
       own.source = Vec2(p.t, 0.0);
       own.origin = origin;
       own.markPropagated();
-      // The ends first: the windows below set their distances too (to rounding).
+      // The corners of its faces first, the ends and each face's apex: the windows below set
+      // their distances too (to rounding).
       seedCorner(E.vertex[0], p.t);
       seedCorner(E.vertex[1], E.length - p.t);
+      for (Index f : E.face) {
+        if (f == kNoIndex) continue;
+        const FaceFrame& fr = mesh_.frame(f, p.element);
+        seedCorner(fr.apex, (fr.apexPos - Vec2(p.t, 0.0)).norm());
+      }
       addInterval(p.element, own, nullptr);
       for (Index f : E.face)
         if (f != kNoIndex) seedFaceFromPoint(f, p, p.element, 0.0, origin);
@@ -186,8 +192,9 @@ void GeodesicSolver::seedFaceFromPoint(Index f, const ResolvedPoint& p, Index sk
   }
 }
 
-// A corner of a source's face (or an end of its edge) at distance d, straight inside the face:
-// that is its distance (no path is shorter than the segment), and it becomes a pseudo-source now.
+// A corner of a source's face (for an edge source, of either face of its edge) at distance d,
+// straight inside the face: that is its distance (no path is shorter than the segment), and it
+// becomes a pseudo-source now.
 // Its windows are real paths (source → corner → point), so they never undercut a distance; what
 // they add is the fan of directions at the corner, where a source a hair from the corner has its
 // rays' directions only to rounding / distance — 1e-7 rad for a source 4e-10 of an edge from it,

@@ -408,5 +408,25 @@ TEST(SolverRegression, ASliverRemovedAtAVertexHasItsFanRelayedThroughIt) {
                                    "e:28,37,0.50000000006", 15);
 }
 
+// Found by fuzz_solver on 2026-11-26 (corpus/fuzz_solver/regress/vertex-agreement-edge-source-3e-
+// 11-from-a-vertex-lying-on-its-edge). An edge source 3.2e-11 from vertex 3, the apex of the
+// zero-area face that is its edge's only face and lies on that edge: every direction into the
+// patch below leaves the source past vertex 3, within 1e-11 of it, where its rays' directions
+// are rounding. Vertex 5 got 2.7361 (via vertex 7) where the straight line is 2.6926. The apex of
+// an edge source's face is now a pseudo-source from the start, as a face source's corners are.
+TEST(SolverRegression, AnEdgeSourceAHairFromTheApexOfItsFaceFansOutThroughThatApex) {
+  const std::string file = "edge-source-a-hair-from-the-apex-of-its-zero-area-face.off";
+  const Mesh mesh = loadMesh(std::string(GEODEX_SOURCE_DIR) + "/tests/data/regression/" + file);
+  GeodesicSolver solver(mesh);
+  EXPECT_EQ(solveAndCheck(parseSurfacePoint("e:7,6,0.50000000003199996"), solver), "");
+  // The patch is planar and convex: the distances are the straight lines from the source, at
+  // x = 4 − (0.5 + 3.2e-11) on the line y = 2.5.
+  const Eigen::Vector2d source(4.0 - 0.50000000003199996, 2.5);
+  for (Index v = 0; v < mesh.numVertices(); ++v) {
+    const Eigen::Vector2d at = mesh.position(v).head<2>();
+    EXPECT_NEAR(solver.vertexDistances()[v], (at - source).norm(), 1e-10) << "vertex " << v;
+  }
+}
+
 }  // namespace
 }  // namespace geodex::proptest
