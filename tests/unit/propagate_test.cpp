@@ -176,8 +176,8 @@ TEST(Fig6, NearCollinearWithinToleranceIsG2AndBeyondIsNot) {
 // on a side. Written out, not read from the tolerance, so that moving it is seen; a wider
 // "collinear" bends rays through the apex that pass beside it.
 TEST(Fig6, TheRaysThroughEitherWindowEndAreCollinearWithTheApexToASineOf1eMinus11) {
-  // G2's ray: s = (0,-1), b0 = (0.5,0), v1 = (1,1); G3's is its mirror image in x = 1. The unit
-  // normals to the two lines point away from the window's inside at s.
+  // G2's ray: s = (0,-1), b0 = (0.5,0), v1 = (1,1); G3's is its mirror image in x = 1. Moved
+  // along +n (a unit normal to the line), s sees the apex inside the wedge; along -n, beside it.
   const Vec2 sG2(0.0, -1.0), sG3(2.0, -1.0);
   const Vec2 nG2 = Vec2(1.0, -0.5).normalized(), nG3 = Vec2(-1.0, -0.5).normalized();
   const double len = std::sqrt(1.25);  // |s - b| = |v1 - b|: an offset δ len is a sine of δ
