@@ -293,14 +293,26 @@ double sewingSlack(const EdgeUpdateEvent& e, std::span<const Interval> beforeNea
 
 }  // namespace
 
+// The largest relative error of the list after against min(before, incoming) over the samples,
+// and the first sample (in x order) where it is reached.
+struct InvariantChecker::PointwiseMinError {
+  double worst = 0.0;
+  std::array<double, 4> at{};  // x, the list's value, the strict and the loose minimum
+
+  // The worse of two, each over its own samples: the same as over all of them in x order.
+  static PointwiseMinError worse(const PointwiseMinError& a, const PointwiseMinError& b) {
+    if (a.worst > b.worst || std::isnan(a.worst)) return a;
+    if (b.worst > a.worst || std::isnan(b.worst)) return b;
+    return a.worst > 0.0 && a.at[0] > b.at[0] ? b : a;
+  }
+};
+
 // The samples of the pointwise-minimum check, sorted, so that one sweep over each list finds the
 // intervals at every sample (rather than a binary search per sample and list, each a cache miss
 // or two).
-std::span<const double> InvariantChecker::pointwiseMinSamples(const EdgeUpdateEvent& e,
-                                                              const ChangedRange& changed,
-                                                              std::span<const Interval> beforeNear,
-                                                              std::span<const Interval> afterNear,
-                                                              double tiny) {
+std::span<const double> InvariantChecker::pointwiseMinSamples(
+    const EdgeUpdateEvent& e, const ChangedRange& changed, std::span<const Interval> beforeNear,
+    std::span<const Interval> afterNear, double tiny, PointwiseMinError& interior) {
   // The uniform samples cover where the two lists differ and where the incoming interval reaches.
   // Beyond that the neighbours are the same intervals before and after (changedRange compared
   // them) and no incoming value is there, so the minimum holds by itself (their pieces still get
@@ -360,6 +372,7 @@ std::span<const double> InvariantChecker::pointwiseMinSamples(const EdgeUpdateEv
   // not taken. (Most of the rewritten range is such: an old interval the incoming one cut
   // shorter, away from the cut.) Inside a piece the intervals covering a point are those at
   // its midpoint when the lists are in order, which is what this needs.
+  const bool interiorApplies = inOrder && e.report.removedTiny.empty();
   const auto walk = [&](double first, auto&& next) {
     std::ptrdiff_t kBefore = lastStartingBefore(e.before, first);
     std::ptrdiff_t kAfter = lastStartingBefore(e.after, first);
@@ -371,6 +384,79 @@ std::span<const double> InvariantChecker::pointwiseMinSamples(const EdgeUpdateEv
       const Interval* oldOne = coveringOnly(e.before, kBefore - 1, kBefore + 1, m);
       const Interval* newOne = coveringOnly(e.after, kAfter - 1, kAfter, m);
       return oldOne != nullptr && newOne != nullptr && sameFunction(*oldOne, *newOne);
+    };
+    // A piece [p, q] whose functions are the same all along it: each interval the sweep would
+    // look at (the neighbours of the one starting last before the sample, in both lists) either
+    // covers the whole piece or ends at or before p or starts at or after q, and which interval
+    // starts last before a point does not change inside the piece. A sample farther than the
+    // slack from p and q then sees, in worstPointwiseMinError, no function by its slack only: its
+    // loose minimum is the strict one, every candidate it matches is one of the functions
+    // covering it, and its error comes down to |list − min(old, incoming)|, evaluated here at
+    // once (the old and the incoming function at most one each, the list's from theirs when it
+    // is one of them). Anything else goes to the sweep.
+    struct Piece {
+      bool plain = false;
+      double from = 0.0, to = 0.0;  // the samples strictly inside (from, to) are taken here
+      const Interval* oldOne = nullptr;
+      const Interval* newOne = nullptr;
+      bool incomingCovers = false;
+      int newIs = 0;  // 1: the incoming function, 2: the old one, 0: its own
+    };
+    const auto plainPiece = [&](double p, double q) {
+      Piece piece;
+      if (!interiorApplies) return piece;
+      const auto sideOf = [&](const Interval& w) {  // 1 covers, 0 beside, -1 neither
+        if (w.b0 <= p && w.b1 >= q) return 1;
+        return w.b1 <= p || w.b0 >= q ? 0 : -1;
+      };
+      const auto stable = [&](std::span<const Interval> list, std::ptrdiff_t k) {
+        return (k < 0 || list[k].b0 <= p) && (k + 1 >= std::ssize(list) || list[k + 1].b0 >= q);
+      };
+      if (!stable(e.before, kBefore) || !stable(e.after, kAfter)) return piece;
+      for (std::ptrdiff_t i = std::max<std::ptrdiff_t>(0, kBefore - 1);
+           i <= std::min(kBefore + 1, numBefore - 1); ++i) {
+        const int side = sideOf(e.before[i]);
+        if (side < 0 || (side == 1 && piece.oldOne != nullptr)) return piece;
+        if (side == 1) piece.oldOne = &e.before[i];
+      }
+      for (std::ptrdiff_t i = std::max<std::ptrdiff_t>(0, kAfter - 1); i <= kAfter; ++i) {
+        const int side = sideOf(e.after[i]);
+        if (side < 0 || (side == 1 && piece.newOne != nullptr)) return piece;
+        if (side == 1) piece.newOne = &e.after[i];
+      }
+      const int incomingSide = sideOf(e.incoming);
+      if (incomingSide < 0) return piece;
+      piece.incomingCovers = incomingSide == 1;
+      if (piece.newOne != nullptr) {
+        if (piece.incomingCovers && sameFunction(*piece.newOne, e.incoming))
+          piece.newIs = 1;
+        else if (piece.oldOne != nullptr && sameFunction(*piece.newOne, *piece.oldOne))
+          piece.newIs = 2;
+      }
+      piece.from = p + tiny, piece.to = q - tiny;
+      piece.plain = true;
+      return piece;
+    };
+    // (The sweep's arithmetic, term for term, where its loose minimum equals the strict one.)
+    const auto takeInterior = [&](const Piece& piece, double x) {
+      const double incomingValue = piece.incomingCovers ? e.incoming.distanceAt(x) : INFINITY;
+      const double oldValue = piece.oldOne != nullptr ? piece.oldOne->distanceAt(x) : INFINITY;
+      const double strict = std::min(incomingValue, oldValue);
+      const double got = piece.newOne == nullptr ? INFINITY
+                         : piece.newIs == 1      ? incomingValue
+                         : piece.newIs == 2      ? oldValue
+                                                 : piece.newOne->distanceAt(x);
+      double err = 0.0;
+      if (!std::isfinite(got)) {
+        err = std::isfinite(strict) ? INFINITY : 0.0;
+      } else if (!std::isfinite(strict)) {
+        err = INFINITY;
+      } else {
+        const double scale = got + e.edgeLength, off = std::abs(got - strict);
+        if (off <= interior.worst * scale) return;
+        err = off / scale;
+      }
+      if (!(err <= interior.worst)) interior.worst = err, interior.at = {x, got, strict, strict};
     };
     // The uniform samples and the midpoints, merged in order as they are made: a uniform sample
     // at an endpoint is always taken.
@@ -385,11 +471,20 @@ std::span<const double> InvariantChecker::pointwiseMinSamples(const EdgeUpdateEv
       const double m = 0.5 * (p + q);
       const bool same = sameFunctionOver(m);
       for (; u <= p; u = nextUniform()) xs.push_back(u);
+      Piece piece;
+      bool classified = false;
+      const auto take = [&](double x) {
+        if (!classified) piece = plainPiece(p, q), classified = true;
+        if (piece.plain && x > piece.from && x < piece.to)
+          takeInterior(piece, x);
+        else
+          xs.push_back(x);
+      };
       for (; u < m; u = nextUniform())
-        if (!same || incomingNear(u)) xs.push_back(u);
-      if (!same || incomingNear(m)) xs.push_back(m);
+        if (!same || incomingNear(u)) take(u);
+      if (!same || incomingNear(m)) take(m);
       for (; u < q; u = nextUniform())
-        if (!same || incomingNear(u)) xs.push_back(u);
+        if (!same || incomingNear(u)) take(u);
       p = q;
     }
     for (; std::isfinite(u); u = nextUniform()) xs.push_back(u);
@@ -430,17 +525,8 @@ std::span<const double> InvariantChecker::pointwiseMinSamples(const EdgeUpdateEv
   return samples_;
 }
 
-namespace {
-
-// The largest relative error of the list after against min(before, incoming) over the samples,
-// and where it is.
-struct PointwiseMinError {
-  double worst = 0.0;
-  std::array<double, 4> at{};  // x, the list's value, the strict and the loose minimum
-};
-
-PointwiseMinError worstPointwiseMinError(const EdgeUpdateEvent& e, std::span<const double> xs,
-                                         double tiny) {
+InvariantChecker::PointwiseMinError InvariantChecker::worstPointwiseMinError(
+    const EdgeUpdateEvent& e, std::span<const double> xs, double tiny) {
   // The last interval of each list starting at or before the sample (-1: none), for sorted
   // lists as lastStartingBefore finds it; advanced from one sample to the next.
   std::ptrdiff_t kBefore = xs.empty() ? -1 : lastStartingBefore(e.before, xs.front());
@@ -546,8 +632,6 @@ PointwiseMinError worstPointwiseMinError(const EdgeUpdateEvent& e, std::span<con
   return {worst, worstAt};
 }
 
-}  // namespace
-
 // Full tier: the list after is the pointwise minimum of the old list and the incoming interval,
 // sampled. Outside the rewritten parts and the incoming range the list after is the list before,
 // which is the minimum there: the samples are taken where the two lists differ or the incoming
@@ -559,8 +643,11 @@ void InvariantChecker::checkPointwiseMin(const EdgeUpdateEvent& e, const Changed
   const std::span<const Interval> beforeNear = e.before.subspan(beforeLo, beforeHi - beforeLo);
   const std::span<const Interval> afterNear = e.after.subspan(lo, hi - lo);
   const double tiny = sewingSlack(e, beforeNear);
-  const std::span<const double> xs = pointwiseMinSamples(e, changed, beforeNear, afterNear, tiny);
-  const PointwiseMinError error = worstPointwiseMinError(e, xs, tiny);
+  PointwiseMinError interior;
+  const std::span<const double> xs =
+      pointwiseMinSamples(e, changed, beforeNear, afterNear, tiny, interior);
+  const PointwiseMinError error =
+      PointwiseMinError::worse(interior, worstPointwiseMinError(e, xs, tiny));
   // (The message is written only when it is needed: this runs at every edge update.)
   const bool ok = error.worst <= tol::kPointwiseMinRel;
   std::string where;

@@ -96,9 +96,15 @@ class InvariantChecker : public SolverObserver {
   void checkExhausted(const Mesh& mesh, Index e, std::span<const Interval> list);
   void checkPointwiseMin(const EdgeUpdateEvent& e, const ChangedRange& changed, std::size_t lo,
                          std::size_t hi);
+  // The samples that need the general evaluation; those well inside a piece are evaluated as the
+  // walk makes them, into `interior`.
+  struct PointwiseMinError;
   std::span<const double> pointwiseMinSamples(const EdgeUpdateEvent& e, const ChangedRange& changed,
                                               std::span<const Interval> beforeNear,
-                                              std::span<const Interval> afterNear, double tiny);
+                                              std::span<const Interval> afterNear, double tiny,
+                                              PointwiseMinError& interior);
+  static PointwiseMinError worstPointwiseMinError(const EdgeUpdateEvent& e,
+                                                  std::span<const double> xs, double tiny);
 
   CheckLevel level_;
   bool throw_;
