@@ -154,6 +154,24 @@ TEST(InvariantChecker, IgnoringAnIncomingIntervalBetterOnlyInsideOneHalfOfTheEdg
   }
 }
 
+// The incoming window is shorter than the list only over one old interval, narrower than the
+// spacing of the uniform samples and between two of them, and the update keeps the list as it was
+// (reporting, as the solver does, the intervals the incoming range reaches as rewritten): the
+// full tier still samples inside that interval.
+TEST(InvariantChecker, KeepingTheListWhereTheIncomingIntervalIsShorterOverOneNarrowIntervalFails) {
+  Update u;
+  u.before = {make(0, 5.05, Vec2(2.5, 1)), make(5.05, 5.25, Vec2(5.15, 1), 10.0),
+              make(5.25, kL, Vec2(7.5, 1))};
+  u.incoming = make(0, kL, Vec2(5.15, 1), 5.0);
+  ASSERT_LT(u.incoming.distanceAt(5.15), u.before[1].distanceAt(5.15));
+  for (const double x : {0.0, 5.05, 5.25, kL})
+    ASSERT_GT(u.incoming.distanceAt(x), std::min(u.before[0].distanceAt(x), u.before[2].distanceAt(x)));
+  u.after = u.before;
+  u.report.first = 0;
+  u.report.last = 3;
+  EXPECT_EQ(violatedBy(u), "pointwise-min");
+}
+
 TEST(InvariantChecker, LosingCoverageFails) {
   Update u;
   u.before = {make(0, kL, Vec2(5, 3), 1.0)};

@@ -208,7 +208,19 @@ InvariantChecker::ChangedRange InvariantChecker::changedRange(const EdgeUpdateEv
     if (!sameInterval(e.before[i], e.after[i])) return whole;
   for (std::size_t k = 0; k < suffix; ++k)
     if (!sameInterval(e.before[beforeHi + k], e.after[last + k])) return whole;
-  return {first, last, first, beforeHi};
+  // The solver's range may begin or end with intervals it wrote back as they were, away from the
+  // incoming range: they are left out too (the minimum holds there by itself). Those the incoming
+  // range meets stay, as the pieces its samples need.
+  ChangedRange r{first, last, first, beforeHi};
+  while (r.afterLo < r.afterHi && r.beforeLo < r.beforeHi &&
+         e.before[r.beforeLo].b1 < e.incoming.b0 &&
+         sameInterval(e.before[r.beforeLo], e.after[r.afterLo]))
+    ++r.afterLo, ++r.beforeLo;
+  while (r.afterLo < r.afterHi && r.beforeLo < r.beforeHi &&
+         e.before[r.beforeHi - 1].b0 > e.incoming.b1 &&
+         sameInterval(e.before[r.beforeHi - 1], e.after[r.afterHi - 1]))
+    --r.afterHi, --r.beforeHi;
+  return r;
 }
 
 void InvariantChecker::onEdgeUpdate(const EdgeUpdateEvent& e) {
