@@ -165,7 +165,8 @@ TEST(InvariantChecker, KeepingTheListWhereTheIncomingIntervalIsShorterOverOneNar
   u.incoming = make(0, kL, Vec2(5.15, 1), 5.0);
   ASSERT_LT(u.incoming.distanceAt(5.15), u.before[1].distanceAt(5.15));
   for (const double x : {0.0, 5.05, 5.25, kL})
-    ASSERT_GT(u.incoming.distanceAt(x), std::min(u.before[0].distanceAt(x), u.before[2].distanceAt(x)));
+    ASSERT_GT(u.incoming.distanceAt(x),
+              std::min(u.before[0].distanceAt(x), u.before[2].distanceAt(x)));
   u.after = u.before;
   u.report.first = 0;
   u.report.last = 3;

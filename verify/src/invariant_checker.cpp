@@ -319,9 +319,10 @@ struct InvariantChecker::PointwiseMinError {
   }
 };
 
-// The samples of the pointwise-minimum check, sorted, so that one sweep over each list finds the
-// intervals at every sample (rather than a binary search per sample and list, each a cache miss
-// or two).
+// The samples of the pointwise-minimum check. Those well inside a piece between two consecutive
+// endpoints are evaluated here, as the walk over the pieces makes them (it knows the intervals
+// over the piece); the others are returned, sorted, so that one sweep over each list
+// (worstPointwiseMinError) finds the intervals at every one of them.
 std::span<const double> InvariantChecker::pointwiseMinSamples(
     const EdgeUpdateEvent& e, const ChangedRange& changed, std::span<const Interval> beforeNear,
     std::span<const Interval> afterNear, double tiny, PointwiseMinError& interior) {
@@ -369,7 +370,14 @@ std::span<const double> InvariantChecker::pointwiseMinSamples(
       if (run[j].b1 < run[j].b0 || (j + 1 < run.size() && run[j + 1].b0 < run[j].b1)) return false;
     return true;
   };
-  const bool inOrder = endsInOrder(beforeNear) && endsInOrder(rewritten) && !(e.incoming.b1 < e.incoming.b0);
+  // (And the incoming range within the near parts' unless they reach the edge's end, as the
+  // ranges the solver reports are: the sweep below sees no interval beyond them.)
+  const bool inOrder =
+      endsInOrder(beforeNear) && endsInOrder(afterNear) && !(e.incoming.b1 < e.incoming.b0) &&
+      (changed.beforeLo == 0 || e.incoming.b0 >= beforeNear.front().b0) &&
+      (changed.beforeHi == e.before.size() || e.incoming.b1 <= beforeNear.back().b1) &&
+      (changed.afterLo == 0 || e.incoming.b0 >= afterNear.front().b0) &&
+      (changed.afterHi == e.after.size() || e.incoming.b1 <= afterNear.back().b1);
   const std::size_t numEnds = 2 * (beforeNear.size() + rewritten.size() + 1);
 
   const double reachFrom = e.incoming.b0 - tiny, reachTo = e.incoming.b1 + tiny;
@@ -377,87 +385,131 @@ std::span<const double> InvariantChecker::pointwiseMinSamples(
   std::vector<double>& xs = samples_;
   xs.clear();
 
-  // Walks the pieces between the numEnds endpoints, in order: `first`, then what next() gives.
-  // Inside a piece where one interval of each list covers the piece with the same function, a
-  // sample the incoming interval does not reach even with the slack has the old list's values
-  // to the bit: every error the sweep computes there is 0 (see worstPointwiseMinError), so it is
-  // not taken. (Most of the rewritten range is such: an old interval the incoming one cut
-  // shorter, away from the cut.) Inside a piece the intervals covering a point are those at
-  // its midpoint when the lists are in order, which is what this needs.
-  const bool interiorApplies = inOrder && e.report.removedTiny.empty();
-  const auto walk = [&](double first, auto&& next) {
-    std::ptrdiff_t kBefore = lastStartingBefore(e.before, first);
-    std::ptrdiff_t kAfter = lastStartingBefore(e.after, first);
-    const std::ptrdiff_t numBefore = std::ssize(e.before), numAfter = std::ssize(e.after);
-    const auto sameFunctionOver = [&](double m) {
-      while (kBefore + 1 < numBefore && e.before[kBefore + 1].b0 <= m) ++kBefore;
-      while (kAfter + 1 < numAfter && e.after[kAfter + 1].b0 <= m) ++kAfter;
-      if (!inOrder) return false;
-      const Interval* oldOne = coveringOnly(e.before, kBefore - 1, kBefore + 1, m);
-      const Interval* newOne = coveringOnly(e.after, kAfter - 1, kAfter, m);
-      return oldOne != nullptr && newOne != nullptr && sameFunction(*oldOne, *newOne);
-    };
-    // A piece [p, q] whose functions are the same all along it: each interval the sweep would
-    // look at (the neighbours of the one starting last before the sample, in both lists) either
-    // covers the whole piece or ends at or before p or starts at or after q, and which interval
-    // starts last before a point does not change inside the piece. A sample farther than the
-    // slack from p and q then sees, in worstPointwiseMinError, no function by its slack only: its
-    // loose minimum is the strict one, every candidate it matches is one of the functions
-    // covering it, and its error comes down to |list − min(old, incoming)|, evaluated here at
-    // once (the old and the incoming function at most one each, the list's from theirs when it
-    // is one of them). Anything else goes to the sweep.
-    struct Piece {
-      bool plain = false;
-      double from = 0.0, to = 0.0;  // the samples strictly inside (from, to) are taken here
-      const Interval* oldOne = nullptr;
-      const Interval* newOne = nullptr;
-      bool incomingCovers = false;
-      int newIs = 0;  // 1: the incoming function, 2: the old one, 0: its own
-    };
-    const auto plainPiece = [&](double p, double q) {
-      Piece piece;
-      if (!interiorApplies) return piece;
-      const auto sideOf = [&](const Interval& w) {  // 1 covers, 0 beside, -1 neither
-        if (w.b0 <= p && w.b1 >= q) return 1;
-        return w.b1 <= p || w.b0 >= q ? 0 : -1;
-      };
-      const auto stable = [&](std::span<const Interval> list, std::ptrdiff_t k) {
-        return (k < 0 || list[k].b0 <= p) && (k + 1 >= std::ssize(list) || list[k + 1].b0 >= q);
-      };
-      if (!stable(e.before, kBefore) || !stable(e.after, kAfter)) return piece;
-      for (std::ptrdiff_t i = std::max<std::ptrdiff_t>(0, kBefore - 1);
-           i <= std::min(kBefore + 1, numBefore - 1); ++i) {
-        const int side = sideOf(e.before[i]);
-        if (side < 0 || (side == 1 && piece.oldOne != nullptr)) return piece;
-        if (side == 1) piece.oldOne = &e.before[i];
+  // The samples of the piece (p, q) (the midpoint and the uniform samples inside), merged in order
+  // with the uniform samples: a uniform sample at or before p (an endpoint, or before the first)
+  // is always taken. Inside a piece where one interval of each list covers it with the same
+  // function, a sample the incoming interval does not reach even with the slack has the old
+  // list's values to the bit: every error the sweep computes there is 0 (see
+  // worstPointwiseMinError), so it is not taken. (Most of the rewritten range is such: an old
+  // interval the incoming one cut shorter, away from the cut.)
+  double u = nextUniform();
+  const auto samplePiece = [&](double p, double q, bool same, auto&& take) {
+    for (; u <= p; u = nextUniform()) xs.push_back(u);
+    const double m = 0.5 * (p + q);
+    for (; u < m; u = nextUniform())
+      if (!same || incomingNear(u)) take(u);
+    if (!same || incomingNear(m)) take(m);
+    for (; u < q; u = nextUniform())
+      if (!same || incomingNear(u)) take(u);
+  };
+  const auto pushSample = [&](double x) { xs.push_back(x); };
+
+  if (!inOrder) {
+    // The endpoints copied out and sorted; the intervals covering a piece found at its midpoint,
+    // and every sample left to the sweep.
+    std::vector<double>& ends = ends_;
+    ends.clear();
+    for (const Interval& w : beforeNear) ends.insert(ends.end(), {w.b0, w.b1});
+    for (const Interval& w : rewritten) ends.insert(ends.end(), {w.b0, w.b1});
+    ends.insert(ends.end(), {e.incoming.b0, e.incoming.b1});
+    std::sort(ends.begin(), ends.end());
+    for (std::size_t i = 1; i < ends.size(); ++i)
+      if (ends[i] > ends[i - 1]) samplePiece(ends[i - 1], ends[i], false, pushSample);
+    for (; std::isfinite(u); u = nextUniform()) xs.push_back(u);
+    return samples_;
+  }
+
+  // Lists in order: one sweep over the ends of the three runs, merged as std::merge would order
+  // them (the second run's end first only when below the first's), knows which interval of each
+  // covers the piece between two consecutive ends: the last one whose start it passed, until
+  // it passes that one's end. (So do the old list's intervals beyond beforeNear and the new
+  // list's beyond afterNear, for lists sorted as the cheap tier checks them: they lie beyond the
+  // neighbours, which are as they were in both lists.)
+  std::size_t tb = 0, ta = 0, ti = 0;
+  const std::size_t nb = 2 * beforeNear.size(), na = 2 * rewritten.size();
+  const auto endOf = [](std::span<const Interval> run, std::size_t t) {
+    return (t & 1) != 0 ? run[t >> 1].b1 : run[t >> 1].b0;
+  };
+  const double incomingEnds[] = {e.incoming.b0, e.incoming.b1};
+  const Interval* oldOne = nullptr;        // of beforeNear
+  const Interval* rewrittenOne = nullptr;  // of rewritten
+  bool incomingCovers = false;
+  // Takes the next end and passes it; returns its value.
+  const auto next = [&]() -> double {
+    const bool fromB = tb < nb, fromA = ta < na;
+    if (fromB || fromA) {
+      const bool takeA = !fromB || (fromA && endOf(rewritten, ta) < endOf(beforeNear, tb));
+      const double s = takeA ? endOf(rewritten, ta) : endOf(beforeNear, tb);
+      if (!(ti < 2 && incomingEnds[ti] < s)) {
+        std::size_t& t = takeA ? ta : tb;
+        const Interval* w = &(takeA ? rewritten : beforeNear)[t >> 1];
+        const Interval*& covering = takeA ? rewrittenOne : oldOne;
+        if ((t & 1) == 0)
+          covering = w;
+        else if (covering == w)
+          covering = nullptr;
+        ++t;
+        return s;
       }
-      for (std::ptrdiff_t i = std::max<std::ptrdiff_t>(0, kAfter - 1); i <= kAfter; ++i) {
-        const int side = sideOf(e.after[i]);
-        if (side < 0 || (side == 1 && piece.newOne != nullptr)) return piece;
-        if (side == 1) piece.newOne = &e.after[i];
+    }
+    incomingCovers = ti == 0;
+    return incomingEnds[ti++];
+  };
+  // The new list's interval over the piece: the rewritten one, or a neighbour of the rewritten
+  // part, which is the old list's there.
+  const Interval* const sameFront = sameFirst != 0 ? &beforeNear.front() : nullptr;
+  const Interval* const sameBack = sameLast != 0 ? &beforeNear.back() : nullptr;
+
+  // A sample farther than the slack from its piece's ends sees, in worstPointwiseMinError, no
+  // function by its slack only: its loose minimum is the strict one, every candidate it matches
+  // is one of the functions covering it, and its error comes down to |list − min(old, incoming)|.
+  // It is evaluated here, with the sweep's arithmetic term for term (the list's value taken from
+  // the old or the incoming function's when it is one of them). Samples nearer the ends go to
+  // the sweep, and so do all of an update that removed a D1 sliver (the sweep bounds the list
+  // differently over it).
+  const bool noSliverRemoved = e.report.removedTiny.empty();
+  double p = next();
+  for (std::size_t i = 1; i < numEnds; ++i) {
+    const Interval* const oldHere = oldOne;
+    const Interval* const newHere = rewrittenOne != nullptr                     ? rewrittenOne
+                                    : oldOne == sameFront || oldOne == sameBack ? oldOne
+                                                                                : nullptr;
+    const bool incomingHere = incomingCovers;
+    const double q = next();
+    if (!(q > p)) {
+      p = q;
+      continue;
+    }
+    const double m = 0.5 * (p + q);
+    if (!(m > p && m < q)) {
+      // (A piece one ulp wide: no sample is inside it by the slack; which intervals hold its
+      // midpoint, an endpoint, is what the lists say there.)
+      const std::ptrdiff_t kBefore = lastStartingBefore(e.before, m);
+      const std::ptrdiff_t kAfter = lastStartingBefore(e.after, m);
+      const Interval* a = coveringOnly(e.before, kBefore - 1, kBefore + 1, m);
+      const Interval* b = coveringOnly(e.after, kAfter - 1, kAfter, m);
+      samplePiece(p, q, a != nullptr && b != nullptr && sameFunction(*a, *b), pushSample);
+      p = q;
+      continue;
+    }
+    const bool same = oldHere != nullptr && newHere != nullptr && sameFunction(*oldHere, *newHere);
+    const int newIs = newHere == nullptr                                       ? 0
+                      : incomingHere && sameFunction(*newHere, e.incoming)     ? 1
+                      : oldHere != nullptr && sameFunction(*newHere, *oldHere) ? 2
+                                                                               : 0;
+    const double inFrom = p + tiny, inTo = q - tiny;
+    samplePiece(p, q, same, [&](double x) {
+      if (!(x > inFrom && x < inTo) || !noSliverRemoved) {
+        xs.push_back(x);
+        return;
       }
-      const int incomingSide = sideOf(e.incoming);
-      if (incomingSide < 0) return piece;
-      piece.incomingCovers = incomingSide == 1;
-      if (piece.newOne != nullptr) {
-        if (piece.incomingCovers && sameFunction(*piece.newOne, e.incoming))
-          piece.newIs = 1;
-        else if (piece.oldOne != nullptr && sameFunction(*piece.newOne, *piece.oldOne))
-          piece.newIs = 2;
-      }
-      piece.from = p + tiny, piece.to = q - tiny;
-      piece.plain = true;
-      return piece;
-    };
-    // (The sweep's arithmetic, term for term, where its loose minimum equals the strict one.)
-    const auto takeInterior = [&](const Piece& piece, double x) {
-      const double incomingValue = piece.incomingCovers ? e.incoming.distanceAt(x) : INFINITY;
-      const double oldValue = piece.oldOne != nullptr ? piece.oldOne->distanceAt(x) : INFINITY;
+      const double incomingValue = incomingHere ? e.incoming.distanceAt(x) : INFINITY;
+      const double oldValue = oldHere != nullptr ? oldHere->distanceAt(x) : INFINITY;
       const double strict = std::min(incomingValue, oldValue);
-      const double got = piece.newOne == nullptr ? INFINITY
-                         : piece.newIs == 1      ? incomingValue
-                         : piece.newIs == 2      ? oldValue
-                                                 : piece.newOne->distanceAt(x);
+      const double got = newHere == nullptr ? INFINITY
+                         : newIs == 1       ? incomingValue
+                         : newIs == 2       ? oldValue
+                                            : newHere->distanceAt(x);
       double err = 0.0;
       if (!std::isfinite(got)) {
         err = std::isfinite(strict) ? INFINITY : 0.0;
@@ -469,71 +521,10 @@ std::span<const double> InvariantChecker::pointwiseMinSamples(
         err = off / scale;
       }
       if (!(err <= interior.worst)) interior.worst = err, interior.at = {x, got, strict, strict};
-    };
-    // The uniform samples and the midpoints, merged in order as they are made: a uniform sample
-    // at an endpoint is always taken.
-    double u = nextUniform();
-    double p = first;
-    for (std::size_t i = 1; i < numEnds; ++i) {
-      const double q = next();
-      if (!(q > p)) {
-        p = q;
-        continue;
-      }
-      const double m = 0.5 * (p + q);
-      const bool same = sameFunctionOver(m);
-      for (; u <= p; u = nextUniform()) xs.push_back(u);
-      Piece piece;
-      bool classified = false;
-      const auto take = [&](double x) {
-        if (!classified) piece = plainPiece(p, q), classified = true;
-        if (piece.plain && x > piece.from && x < piece.to)
-          takeInterior(piece, x);
-        else
-          xs.push_back(x);
-      };
-      for (; u < m; u = nextUniform())
-        if (!same || incomingNear(u)) take(u);
-      if (!same || incomingNear(m)) take(m);
-      for (; u < q; u = nextUniform())
-        if (!same || incomingNear(u)) take(u);
-      p = q;
-    }
-    for (; std::isfinite(u); u = nextUniform()) xs.push_back(u);
-  };
-
-  if (inOrder) {
-    // The ends of the old list's part merged with the new one's, then with the incoming
-    // interval's, taken one at a time as std::merge would order them (the second run's end
-    // first only when below the first's).
-    std::size_t tb = 0, ta = 0, ti = 0;
-    const std::size_t nb = 2 * beforeNear.size(), na = 2 * rewritten.size();
-    const auto endOf = [](std::span<const Interval> run, std::size_t t) {
-      return (t & 1) != 0 ? run[t >> 1].b1 : run[t >> 1].b0;
-    };
-    const double incomingEnds[] = {e.incoming.b0, e.incoming.b1};
-    const auto next = [&]() -> double {
-      const bool fromB = tb < nb, fromA = ta < na;
-      if (fromB || fromA) {
-        const bool takeA = !fromB || (fromA && endOf(rewritten, ta) < endOf(beforeNear, tb));
-        const double s = takeA ? endOf(rewritten, ta) : endOf(beforeNear, tb);
-        if (ti < 2 && incomingEnds[ti] < s) return incomingEnds[ti++];
-        ++(takeA ? ta : tb);
-        return s;
-      }
-      return incomingEnds[ti++];
-    };
-    walk(next(), next);
-  } else {
-    std::vector<double>& ends = ends_;
-    ends.clear();
-    for (const Interval& w : beforeNear) ends.insert(ends.end(), {w.b0, w.b1});
-    for (const Interval& w : rewritten) ends.insert(ends.end(), {w.b0, w.b1});
-    ends.insert(ends.end(), {e.incoming.b0, e.incoming.b1});
-    std::sort(ends.begin(), ends.end());
-    std::size_t i = 1;
-    walk(ends.front(), [&] { return ends[i++]; });
+    });
+    p = q;
   }
+  for (; std::isfinite(u); u = nextUniform()) xs.push_back(u);
   return samples_;
 }
 
