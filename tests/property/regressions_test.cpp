@@ -441,5 +441,18 @@ TEST(SolverRegression, AFaceSourceAHairFromACornerLeavesNoGapDownstream) {
   EXPECT_EQ(solveAndCheck(parseSurfacePoint("f:0,1.27e-8,0,0.9999999873"), solver), "");
 }
 
+// Known bug (fuzz_solver, 2026-11-26; GEODEX_KNOWN_BUGS): a face source 1.3e-10 from a corner, on
+// a line with saddle 6 and vertex 14. On edge 11-14 the windows of saddle 6 and of the source end
+// 1.0e-10 and 1.1e-11 short of vertex 14 (rounding in rays that graze the corner), a stretch wider
+// than step 4 sews, and vertex 11's window along its own edge, 0.034 longer, takes it.
+TEST(SolverRegression, AFaceSourceAHairFromACornerLeavesNoEdgeEndToAFarWindow) {
+  const Mesh mesh =
+      loadMesh(std::string(GEODEX_SOURCE_DIR) + "/tests/data/regression/" +
+               "face-source-a-hair-from-a-corner-leaves-an-edge-end-to-a-far-window.off");
+  GeodesicSolver solver(mesh);
+  EXPECT_EQ(solveAndCheck(parseSurfacePoint("f:0,1.3e-10,0,0.99999999987"), solver), "");
+  expectEdgesAgreeAtVertex(solver, 14);
+}
+
 }  // namespace
 }  // namespace geodex::proptest
