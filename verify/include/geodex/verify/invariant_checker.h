@@ -90,6 +90,7 @@ class InvariantChecker : public SolverObserver {
   // The checks of one edge update, in the order onEdgeUpdate makes them; [lo, hi) is the part of
   // e.after they look at (what the update rewrote, with a neighbour on each side).
   struct ChangedRange;
+  static ChangedRange reportedRange(const EdgeUpdateEvent& e);
   static ChangedRange changedRange(const EdgeUpdateEvent& e);
   void checkWellFormed(const EdgeUpdateEvent& e, std::size_t lo, std::size_t hi);
   void checkContinuityAtEq1(const EdgeUpdateEvent& e, std::size_t lo, std::size_t hi);
