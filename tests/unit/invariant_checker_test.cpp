@@ -131,6 +131,18 @@ TEST(InvariantChecker, APairFormedWithTheNeighbourOfTheRewrittenPartIsChecked) {
   EXPECT_EQ(violatedBy(u), "no-overlap");
 }
 
+// An update may remove an interval and write nothing new: its two neighbours, both as they were,
+// now form a pair that no update checked before.
+TEST(InvariantChecker, AnIntervalRemovedLeavesItsNeighboursAPairThatIsChecked) {
+  const double gap = 0.1 * tol::kTinyIntervalRel * kL;
+  Update u;
+  u.before = {make(0, 5, Vec2(2, 1)), make(5, 5 + gap, Vec2(5, 1)), make(5 + gap, kL, Vec2(7, 1))};
+  u.incoming = make(5, 5 + gap, Vec2(5, 1), 1.0);
+  u.after = {u.before[0], u.before[2]};  // the middle one dropped: a gap below epsilon
+  u.report.first = 1, u.report.last = 1;
+  EXPECT_EQ(violatedBy(u), "no-tiny-gap");
+}
+
 TEST(InvariantChecker, IgnoringABetterIncomingIntervalFails) {
   Update u;
   u.before = {make(0, kL, Vec2(5, 3), 1.0)};
