@@ -185,6 +185,18 @@ TEST(InvariantChecker, KeepingTheListWhereTheIncomingIntervalIsShorterOverOneNar
   EXPECT_EQ(violatedBy(u), "pointwise-min");
 }
 
+// Over a D1 sliver step 3 removed, the list may stand above the functions there by a bound the
+// sliver's length sets; away from it the update is checked as any other: a list below every
+// function offered (here all of it) fails.
+TEST(InvariantChecker, AListBelowEveryFunctionFailsAwayFromASliverTheUpdateRemoved) {
+  Update u;
+  u.before = {make(0, kL, Vec2(5, 1), 1.0)};
+  u.incoming = make(0, kL, Vec2(5, 1), 2.0);  // longer everywhere
+  u.after = {make(0, kL, Vec2(5, 1), 0.5)};   // shorter than anything that was offered
+  u.report.removedTiny = {{1.0, 1.0 + 0.1 * tol::kTinyIntervalRel * kL}};
+  EXPECT_EQ(violatedBy(u), "pointwise-min");
+}
+
 TEST(InvariantChecker, LosingCoverageFails) {
   Update u;
   u.before = {make(0, kL, Vec2(5, 3), 1.0)};
