@@ -150,6 +150,15 @@ double median(std::vector<double> v) {
   return n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
+/// The ratios checked[i] / unchecked[i] of solves run in pairs, sorted.
+std::vector<double> pairwiseRatios(const Timing& checked, const Timing& unchecked) {
+  std::vector<double> ratios;
+  for (std::size_t i = 0; i < checked.cpu.size() && i < unchecked.cpu.size(); ++i)
+    ratios.push_back(checked.cpu[i] / unchecked.cpu[i]);
+  std::sort(ratios.begin(), ratios.end());
+  return ratios;
+}
+
 /// A field of /proc/self/status in kB ("VmRSS", "VmHWM"); -1 if absent.
 long statusKiloBytes(const char* field) {
   std::ifstream in("/proc/self/status");
@@ -455,10 +464,7 @@ void runCase(const Case& c, const Options& options, Result& r) {
     }
     r.noneSeconds = median(r.noneRuns.cpu);
     r.noopSeconds = median(r.noopRuns.cpu);
-    std::vector<double> ratios;
-    for (std::size_t i = 0; i < r.noneRuns.cpu.size(); ++i)
-      ratios.push_back(r.noopRuns.cpu[i] / r.noneRuns.cpu[i]);
-    std::sort(ratios.begin(), ratios.end());
+    const std::vector<double> ratios = pairwiseRatios(r.noopRuns, r.noneRuns);
     r.noopRatioQ1 = ratios[ratios.size() / 4];
     r.noopRatioQ3 = ratios[(3 * ratios.size()) / 4];
     // Each tier run follows an unchecked solve, and the tier's figure is the median of the
@@ -475,9 +481,7 @@ void runCase(const Case& c, const Options& options, Result& r) {
           r.firstViolation = checker.firstViolation()->invariant() + ": " +
                              checker.firstViolation()->what();
       }
-      std::vector<double> ratios;
-      for (std::size_t i = 0; i < runs.cpu.size(); ++i) ratios.push_back(runs.cpu[i] / base.cpu[i]);
-      return median(ratios);
+      return median(pairwiseRatios(runs, base));
     };
     r.cheapRatio = tier(verify::CheckLevel::Cheap, r.cheapViolations, r.cheapRuns, r.cheapBaseRuns);
     r.cheapSeconds = median(r.cheapRuns.cpu);
