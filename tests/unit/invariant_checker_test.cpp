@@ -166,6 +166,27 @@ TEST(InvariantChecker, IgnoringAnIncomingIntervalBetterOnlyInsideOneHalfOfTheEdg
   }
 }
 
+// The incoming window dips below the old one only over a stretch narrower than the spacing of the
+// uniform samples, between two of them and away from the edge's middle, inside one piece: the
+// full tier finds where the difference of the two is largest, so ignoring it still fails. Also
+// with the incoming source on the edge's line, where the distance has a kink instead of a smooth
+// minimum.
+TEST(InvariantChecker, IgnoringAnIncomingIntervalBetterOnlyBetweenTwoSamplesFails) {
+  const double spacing = kL / 32, foot = 16.5 * spacing;  // halfway between two samples
+  for (const double height : {0.01, 0.0}) {
+    Update u;
+    u.before = {make(0, kL, Vec2(kL / 2, 100))};
+    const double oldAtFoot = u.before[0].distanceAt(foot), dip = 0.05;
+    u.incoming = make(0, kL, Vec2(foot, height), oldAtFoot - dip - height);
+    ASSERT_LT(u.incoming.distanceAt(foot), oldAtFoot);
+    for (int j = 0; j <= 32; ++j)  // no uniform sample (the midpoint is one) sees it shorter
+      ASSERT_GT(u.incoming.distanceAt(j * spacing), u.before[0].distanceAt(j * spacing)) << j;
+    u.after = u.before;
+    u.report.first = 0, u.report.last = 1;
+    EXPECT_EQ(violatedBy(u), "pointwise-min") << "source at height " << height;
+  }
+}
+
 // The incoming window is shorter than the list only over one old interval, narrower than the
 // spacing of the uniform samples and between two of them, and the update keeps the list as it was
 // (reporting, as the solver does, the intervals the incoming range reaches as rewritten): the

@@ -216,8 +216,28 @@ struct InvariantChecker::ChangedRange {
   std::size_t diffAfterLo, diffAfterHi, diffBeforeLo, diffBeforeHi;
 };
 
-InvariantChecker::ChangedRange InvariantChecker::reportedRange(const EdgeUpdateEvent& e) {
-  const ChangedRange whole{0, e.after.size(), 0, e.before.size(), 0, 0, 0, 0};
+namespace {
+
+// [beforeLo, beforeHi) of the old list and [afterLo, afterHi) of the new one.
+struct ListRanges {
+  std::size_t afterLo, afterHi, beforeLo, beforeHi;
+};
+
+// The ranges moved inwards past the intervals the same in both lists: at the front while
+// `atFront` holds of the old one there, at the back while `atBack` does.
+ListRanges pastSameIntervals(const EdgeUpdateEvent& e, ListRanges r, auto atFront, auto atBack) {
+  while (r.afterLo < r.afterHi && r.beforeLo < r.beforeHi && atFront(e.before[r.beforeLo]) &&
+         sameInterval(e.before[r.beforeLo], e.after[r.afterLo]))
+    ++r.afterLo, ++r.beforeLo;
+  while (r.afterLo < r.afterHi && r.beforeLo < r.beforeHi && atBack(e.before[r.beforeHi - 1]) &&
+         sameInterval(e.before[r.beforeHi - 1], e.after[r.afterHi - 1]))
+    --r.afterHi, --r.beforeHi;
+  return r;
+}
+
+// The range the solver reports, verified: the whole lists when the intervals outside it differ.
+ListRanges reportedRange(const EdgeUpdateEvent& e) {
+  const ListRanges whole{0, e.after.size(), 0, e.before.size()};
   const std::size_t first = e.report.first, last = e.report.last;
   if (first > last || last > e.after.size()) return whole;
   const std::size_t suffix = e.after.size() - last;
@@ -229,29 +249,19 @@ InvariantChecker::ChangedRange InvariantChecker::reportedRange(const EdgeUpdateE
   // The solver's range may begin or end with intervals it wrote back as they were, away from the
   // incoming range: they are left out too (the minimum holds there by itself). Those the incoming
   // range meets stay, as the pieces its samples need.
-  ChangedRange r{first, last, first, beforeHi, 0, 0, 0, 0};
-  while (r.afterLo < r.afterHi && r.beforeLo < r.beforeHi &&
-         e.before[r.beforeLo].b1 < e.incoming.b0 &&
-         sameInterval(e.before[r.beforeLo], e.after[r.afterLo]))
-    ++r.afterLo, ++r.beforeLo;
-  while (r.afterLo < r.afterHi && r.beforeLo < r.beforeHi &&
-         e.before[r.beforeHi - 1].b0 > e.incoming.b1 &&
-         sameInterval(e.before[r.beforeHi - 1], e.after[r.afterHi - 1]))
-    --r.afterHi, --r.beforeHi;
-  return r;
+  return pastSameIntervals(
+      e, {first, last, first, beforeHi}, [&](const Interval& w) { return w.b1 < e.incoming.b0; },
+      [&](const Interval& w) { return w.b0 > e.incoming.b1; });
 }
 
+}  // namespace
+
 InvariantChecker::ChangedRange InvariantChecker::changedRange(const EdgeUpdateEvent& e) {
-  ChangedRange r = reportedRange(e);
-  r.diffAfterLo = r.afterLo, r.diffAfterHi = r.afterHi;
-  r.diffBeforeLo = r.beforeLo, r.diffBeforeHi = r.beforeHi;
-  while (r.diffAfterLo < r.diffAfterHi && r.diffBeforeLo < r.diffBeforeHi &&
-         sameInterval(e.after[r.diffAfterLo], e.before[r.diffBeforeLo]))
-    ++r.diffAfterLo, ++r.diffBeforeLo;
-  while (r.diffAfterLo < r.diffAfterHi && r.diffBeforeLo < r.diffBeforeHi &&
-         sameInterval(e.after[r.diffAfterHi - 1], e.before[r.diffBeforeHi - 1]))
-    --r.diffAfterHi, --r.diffBeforeHi;
-  return r;
+  const ListRanges r = reportedRange(e);
+  const auto always = [](const Interval&) { return true; };
+  const ListRanges d = pastSameIntervals(e, r, always, always);
+  return {r.afterLo, r.afterHi, r.beforeLo, r.beforeHi,
+          d.afterLo, d.afterHi, d.beforeLo, d.beforeHi};
 }
 
 void InvariantChecker::onEdgeUpdate(const EdgeUpdateEvent& e) {
@@ -340,6 +350,16 @@ double sewingSlack(const EdgeUpdateEvent& e, std::span<const Interval> beforeNea
   return std::max({tiny, tinyLength(e.incoming, e.edgeLength), sewLength(e.incoming, e.edgeLength)});
 }
 
+// Where the difference of two distance functions along the edge can be largest inside a span,
+// besides its ends: where their slopes (x − a) / r agree, which squared is (x − a) d = (x − b) c
+// for sources (a, c) and (b, d) (the other sign makes the slopes opposite), and the kink of a
+// function whose source is on the edge. NaN where there is none.
+std::array<double, 3> largestDifferenceAt(const Interval& f, const Interval& g) {
+  const double a = f.source.x(), c = std::abs(f.source.y());
+  const double b = g.source.x(), d = std::abs(g.source.y());
+  return {(a * d - b * c) / (d - c), c == 0.0 ? a : NAN, d == 0.0 ? b : NAN};
+}
+
 }  // namespace
 
 // The largest relative error of the list after against min(before, incoming) over the samples,
@@ -382,9 +402,10 @@ std::span<const double> InvariantChecker::pointwiseMinSamples(
     k = static_cast<int>(std::clamp(std::floor(from / e.edgeLength * uniform) - 1.0, 0.0, double(uniform)));
     kLast = static_cast<int>(std::clamp(std::ceil(to / e.edgeLength * uniform) + 1.0, 0.0, double(uniform)));
   }
+  const auto uniformAt = [&](int j) { return e.edgeLength * j / uniform; };
   const auto nextUniform = [&] {
     for (; k <= kLast; ++k) {
-      const double x = e.edgeLength * k / uniform;
+      const double x = uniformAt(k);
       if (x >= from && x <= to) return ++k, x;
     }
     return double(INFINITY);
@@ -430,6 +451,29 @@ std::span<const double> InvariantChecker::pointwiseMinSamples(
   // worstPointwiseMinError), so it is not taken. (Most of the rewritten range is such: an old
   // interval the incoming one cut shorter, away from the cut.)
   double u = nextUniform();
+  // Passes the samples below x, untaken: straight to the index floor(x / spacing), whose samples
+  // before are a spacing (less a few roundings) below x, then one by one.
+  const auto skipTo = [&](double x) {
+    if (!(u < x)) return;
+    if (std::isfinite(x) && e.edgeLength > 0.0)
+      k = std::max(k, static_cast<int>(
+                          std::clamp(std::floor(x / e.edgeLength * uniform), 0.0, uniform + 1.0)));
+    for (u = nextUniform(); u < x; u = nextUniform()) {
+    }
+  };
+  // The largest sample below `below` and at most `atMost` (−∞ for none), found from its index.
+  const auto lastSample = [&](double below, double atMost) {
+    int j = kLast;
+    const double bound = std::min(below, atMost);
+    if (std::isfinite(bound) && e.edgeLength > 0.0)
+      j = std::min(j, static_cast<int>(std::clamp(std::ceil(bound / e.edgeLength * uniform) + 1.0,
+                                                  -1.0, double(uniform))));
+    for (; j >= 0; --j) {
+      const double x = uniformAt(j);
+      if (x < below && x <= atMost && x <= to) return x >= from ? x : -double(INFINITY);
+    }
+    return -double(INFINITY);
+  };
   const auto samplePiece = [&](double p, double q, bool same, auto&& take) {
     for (; u <= p; u = nextUniform()) xs.push_back(u);
     const double m = 0.5 * (p + q);
@@ -538,11 +582,7 @@ std::span<const double> InvariantChecker::pointwiseMinSamples(
                       : same                                               ? 2
                                                                            : 0;
     const double inFrom = p + tiny, inTo = q - tiny;
-    samplePiece(p, q, same, [&](double x) {
-      if (!(x > inFrom && x < inTo) || !noSliverRemoved) {
-        xs.push_back(x);
-        return;
-      }
+    const auto evaluate = [&](double x) {
       const double incomingValue = incomingHere ? e.incoming.distanceAt(x) : INFINITY;
       const double oldValue = oldHere != nullptr ? oldHere->distanceAt(x) : INFINITY;
       const double strict = std::min(incomingValue, oldValue);
@@ -561,7 +601,51 @@ std::span<const double> InvariantChecker::pointwiseMinSamples(
         err = off / scale;
       }
       if (!(err <= interior.worst)) interior.worst = err, interior.at = {x, got, strict, strict};
-    });
+    };
+    // Where the new list holds one of the two functions present, the error is how far it lies
+    // above the other, which is largest at an end of the span the samples cover or where the two
+    // slopes agree (largestDifferenceAt): those points are evaluated, and the samples between
+    // stand for that span (found exactly, not at 32 points: a dip narrower than their spacing is
+    // seen). The error is relative to the list's value plus L, which moves by at most the span's
+    // width along it, so the point found has at least half the largest relative error of the
+    // span. Where the new list holds the only function present, the error is 0.
+    const Interval* const other = newIs == 1                   ? oldHere
+                                  : newIs == 2 && incomingHere ? &e.incoming
+                                                               : nullptr;
+    const bool none = (newIs == 1 && oldHere == nullptr) || (newIs == 2 && !incomingHere);
+    if (!noSliverRemoved) {
+      samplePiece(p, q, same, pushSample);
+    } else if (other == nullptr && !none) {
+      samplePiece(p, q, same, [&](double x) {
+        if (x > inFrom && x < inTo)
+          evaluate(x);
+        else
+          xs.push_back(x);
+      });
+    } else if (!(m > inFrom && m < inTo)) {
+      samplePiece(p, q, same, pushSample);  // (no sample is inside by the slack)
+    } else {
+      // The samples samplePiece takes, with those inside by the slack found at the two ends of
+      // their run (where the incoming interval reaches, in a piece where the lists agree) by index.
+      const double takenFrom = same ? reachFrom : -INFINITY, takenTo = same ? reachTo : INFINITY;
+      const auto taken = [&](double x) { return x >= takenFrom && x <= takenTo; };
+      for (; u <= p; u = nextUniform()) xs.push_back(u);
+      for (; u <= inFrom; u = nextUniform())
+        if (taken(u)) xs.push_back(u);
+      double first = INFINITY, last = -INFINITY;
+      skipTo(std::min(takenFrom, inTo));
+      if (u < inTo && u <= takenTo) first = u, last = std::max(u, lastSample(inTo, takenTo));
+      skipTo(inTo);
+      if (taken(m)) first = std::min(first, m), last = std::max(last, m);
+      for (; u < q; u = nextUniform())
+        if (taken(u)) xs.push_back(u);
+      if (other != nullptr && first <= last) {
+        evaluate(first);
+        if (last > first) evaluate(last);
+        for (const double x : largestDifferenceAt(*newHere, *other))
+          if (x > first && x < last) evaluate(x);
+      }
+    }
     p = q;
   }
   for (; std::isfinite(u); u = nextUniform()) xs.push_back(u);

@@ -60,6 +60,10 @@ class InvariantChecker : public SolverObserver {
  public:
   explicit InvariantChecker(CheckLevel level = CheckLevel::Cheap, bool throwOnViolation = true);
 
+  /// Checks what the update changed, with its neighbours: the rest of the list is taken as the
+  /// updates before left it and were checked then. So a checker must see every update of a list
+  /// from the empty one (as an observer set before GeodesicSolver::solve does); one update over a
+  /// list it never saw is checked only where that update changed it.
   void onEdgeUpdate(const EdgeUpdateEvent& e) override;
   void onFinish(const GeodesicSolver& solver) override;
   /// The end-of-run invariants (full tier) on given lists: every edge in a component holding a
@@ -90,7 +94,6 @@ class InvariantChecker : public SolverObserver {
   // The checks of one edge update, in the order onEdgeUpdate makes them; [lo, hi) is the part of
   // e.after they look at (what the update rewrote, with a neighbour on each side).
   struct ChangedRange;
-  static ChangedRange reportedRange(const EdgeUpdateEvent& e);
   static ChangedRange changedRange(const EdgeUpdateEvent& e);
   void checkWellFormed(const EdgeUpdateEvent& e, std::size_t lo, std::size_t hi);
   void checkContinuityAtEq1(const EdgeUpdateEvent& e, std::size_t lo, std::size_t hi);
