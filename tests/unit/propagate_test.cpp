@@ -6,6 +6,8 @@
 
 #include <cmath>
 
+#include "geodex/predicates.h"
+
 namespace geodex {
 namespace {
 
@@ -19,6 +21,16 @@ void expectChild(const LocalPropagation& r, int k, int edge, double t0, double t
   EXPECT_EQ(r.children[k].edge, edge);
   EXPECT_NEAR(r.children[k].t0, t0, 1e-14);
   EXPECT_NEAR(r.children[k].t1, t1, 1e-14);
+}
+
+// Where the ray s→q meets the segment a–b, as a parameter along it. The boundary rays of the
+// Fig. 6 branches cross the edges they are asked about; a ray parallel to the segment has no
+// crossing, and gets the segment's middle rather than an end or a NaN (the documented answer).
+TEST(RayHitsSegment, ACrossingIsItsParameterAndAParallelRayGetsTheMiddle) {
+  const Vec2 s(0.0, -1.0), q(0.0, 0.0);  // up the y axis
+  EXPECT_DOUBLE_EQ(pred::rayHitsSegment(s, q, Vec2(-1.0, 1.0), Vec2(3.0, 1.0)), 0.25);
+  EXPECT_DOUBLE_EQ(pred::rayHitsSegment(s, q, Vec2(1.0, 0.0), Vec2(1.0, 2.0)), 0.5);
+  EXPECT_DOUBLE_EQ(pred::rayHitsSegment(s, q, Vec2(-1.0, 2.0), Vec2(-1.0, 0.0)), 0.5);
 }
 
 TEST(Fig6, InsideWedgeGivesBothEdges) {
