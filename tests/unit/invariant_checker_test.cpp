@@ -218,6 +218,65 @@ TEST(InvariantChecker, AListBelowEveryFunctionFailsAwayFromASliverTheUpdateRemov
   EXPECT_EQ(violatedBy(u), "pointwise-min");
 }
 
+// An update that removed a D1 sliver has all its samples checked with the slack of every function
+// near them; where no function reaches, even with the slack, the list may not gain an interval:
+// an old interval grown over a stretch nothing covered fails, far from the sliver.
+TEST(InvariantChecker, AnIntervalGrownWhereNothingReachedFailsInAnUpdateThatRemovedASliver) {
+  Update u;
+  u.before = {make(0, 5, Vec2(2, 1))};
+  u.incoming = make(8, kL, Vec2(9, 1));
+  u.report.removedTiny = {{9.0, 9.0 + 0.1 * tol::kTinyIntervalRel * kL}};
+  u.after = {u.before[0], u.incoming};
+  EXPECT_EQ(violatedBy(u), "");
+  u.after[0].b1 = 6.0;  // the same window, grown over (5, 6)
+  EXPECT_EQ(violatedBy(u), "pointwise-min");
+}
+
+// Step 3 may let a neighbour grow over a D1 sliver only where it is about as short as the sliver:
+// an incoming sliver far shorter than the interval kept over it is a distance lost, whether or
+// not the update calls it removed.
+TEST(InvariantChecker, ASliverFarShorterThanTheIntervalKeptOverItFailsThoughRemoved) {
+  const double sliver = 0.1 * tol::kTinyIntervalRel * kL;
+  Update u;
+  u.before = {make(0, 5, Vec2(2.5, 1)), make(5, kL, Vec2(7.5, 1))};
+  u.after = u.before;
+  u.report.first = 1, u.report.last = 2;
+  u.report.removedTiny = {{5.0, 5.0 + sliver}};
+  u.incoming = make(5, 5 + sliver, Vec2(7.5, 1), 1.0);  // longer than the old one: nothing lost
+  EXPECT_EQ(violatedBy(u), "");
+  u.incoming = make(5, 5 + sliver, Vec2(5, 0.1));  // 0.1 against 2.69 at x = 5
+  EXPECT_EQ(violatedBy(u), "pointwise-min");
+}
+
+// A split placed early: the incoming interval takes over 1e-6 before it is the shorter one, far
+// more than the slack. The only sample in that stretch is the uniform one at the middle of the
+// edge, a hair after the split.
+TEST(InvariantChecker, AnIncomingIntervalTakingOverBeforeItIsShorterFailsJustAfterTheSplit) {
+  Update u;
+  u.before = {make(0, kL, Vec2(0, 1))};
+  const double crossing = kL / 2 + 1e-6;
+  const double sigma = u.before[0].distanceAt(crossing) - std::hypot(kL - crossing, 1.0);
+  u.incoming = make(0, kL, Vec2(kL, 1), sigma);
+  ASSERT_GT(u.incoming.distanceAt(kL / 2), u.before[0].distanceAt(kL / 2));
+  const double split = kL / 2 - 0.5 * tol::kTinyIntervalRel * kL;
+  u.after = {make(0, crossing, Vec2(0, 1)), make(crossing, kL, Vec2(kL, 1), sigma)};
+  u.report.first = 0, u.report.last = 2;
+  EXPECT_EQ(violatedBy(u), "");
+  u.after[0].b1 = u.after[1].b0 = split;
+  EXPECT_EQ(violatedBy(u), "pointwise-min");
+}
+
+// Ranges out of order take the full tier's general path, which sorts the ends of the lists before
+// sampling between them. An incoming range given backwards covers nothing and offers no value: the
+// list as it was passes (and, under ASan, the path reads nothing past the ends it sorted).
+TEST(InvariantChecker, AnIncomingRangeGivenBackwardsOffersNothingAndTheListAsItWasPasses) {
+  Update u;
+  u.before = {make(0, kL, Vec2(5, 1))};
+  u.after = u.before;
+  u.incoming = make(8, 2, Vec2(5, 0.5));  // shorter everywhere, were it a range
+  EXPECT_EQ(violatedBy(u), "");
+}
+
 TEST(InvariantChecker, LosingCoverageFails) {
   Update u;
   u.before = {make(0, kL, Vec2(5, 3), 1.0)};
