@@ -350,14 +350,19 @@ double sewingSlack(const EdgeUpdateEvent& e, std::span<const Interval> beforeNea
   return std::max({tiny, tinyLength(e.incoming, e.edgeLength), sewLength(e.incoming, e.edgeLength)});
 }
 
-// Where the difference of two distance functions along the edge can be largest inside a span,
-// besides its ends: where their slopes (x − a) / r agree, which squared is (x − a) d = (x − b) c
-// for sources (a, c) and (b, d) (the other sign makes the slopes opposite), and the kink of a
-// function whose source is on the edge. NaN where there is none.
-std::array<double, 3> largestDifferenceAt(const Interval& f, const Interval& g) {
+// Where the difference of two distance functions along the edge can be largest inside the span
+// (lo, hi), besides its ends: where their slopes (x − a) / r agree, which squared is
+// (x − a) d = (x − b) c for sources (a, c) and (b, d) (the other sign makes the slopes opposite),
+// and the kink of a function whose source is on the edge. Infinity where there is none: no NaN
+// and no division that could overflow or divide by zero (the debug tests trap those).
+std::array<double, 3> largestDifferenceAt(const Interval& f, const Interval& g, double lo,
+                                          double hi) {
   const double a = f.source.x(), c = std::abs(f.source.y());
   const double b = g.source.x(), d = std::abs(g.source.y());
-  return {(a * d - b * c) / (d - c), c == 0.0 ? a : NAN, d == 0.0 ? b : NAN};
+  const double num = a * d - b * c, den = d - c;
+  const bool inSpan =
+      den != 0.0 && std::abs(num) <= std::abs(den) * std::max(std::abs(lo), std::abs(hi));
+  return {inSpan ? num / den : INFINITY, c == 0.0 ? a : INFINITY, d == 0.0 ? b : INFINITY};
 }
 
 }  // namespace
@@ -642,7 +647,7 @@ std::span<const double> InvariantChecker::pointwiseMinSamples(
       if (other != nullptr && first <= last) {
         evaluate(first);
         if (last > first) evaluate(last);
-        for (const double x : largestDifferenceAt(*newHere, *other))
+        for (const double x : largestDifferenceAt(*newHere, *other, first, last))
           if (x > first && x < last) evaluate(x);
       }
     }
