@@ -233,8 +233,8 @@ TEST(InvariantChecker, AnIntervalGrownWhereNothingReachedFailsInAnUpdateThatRemo
 }
 
 // Step 3 may let a neighbour grow over a D1 sliver only where it is about as short as the sliver:
-// an incoming sliver far shorter than the interval kept over it is a distance lost, whether or
-// not the update calls it removed.
+// an incoming sliver far shorter than the interval kept over it is a distance lost, though the
+// update calls it removed.
 TEST(InvariantChecker, ASliverFarShorterThanTheIntervalKeptOverItFailsThoughRemoved) {
   const double sliver = 0.1 * tol::kTinyIntervalRel * kL;
   Update u;
