@@ -668,6 +668,58 @@ TEST(Algorithm2, D4InaccurateRootIsPolished) {
   EXPECT_GE(e.total[DegeneracyKind::D4], 1u) << "this configuration was chosen to need D4";
 }
 
+// D4 counts a split of a piece that Eq. 1 could not place, polished by bisection, inside the piece.
+// One within ε of the piece's end is the two functions meeting there (e.g. both through the same
+// vertex), which Eq. 1 need not resolve: what the other keeps beyond it is a sliver, step 3's D1.
+// The pair of D4InaccurateRootIsPolished, with the incoming range ending just past its crossing.
+TEST(Algorithm2, AnUnplacedRootWithinEpsilonOfThePiecesEndIsNoD4) {
+  const Interval far = make(0.0, kL, Vec2(106679.50483344488, 350837.94985744485), 0.0);
+  Interval nearby =
+      make(0.0, kL, Vec2(0.02921229530964543, 0.031554045793446041), 366698.19360690453);
+  // Where the two distances cross, found here from the functions themselves: nearby is shorter
+  // before it.
+  double l = 0.0, h = kL;
+  ASSERT_LT(nearby.distanceAt(l), far.distanceAt(l));
+  ASSERT_GT(nearby.distanceAt(h), far.distanceAt(h));
+  for (int it = 0; it < 200 && h - l > 1e-15; ++it) {
+    const double mid = 0.5 * (l + h);
+    (nearby.distanceAt(mid) < far.distanceAt(mid) ? l : h) = mid;
+  }
+  const double pastTheCrossing = 1e-6;
+  ASSERT_LT(pastTheCrossing, 0.5 * tinyLength(far, kL)) << "within the far interval's ε";
+  nearby.b1 = l + pastTheCrossing;
+  Edge1 e;
+  e.insert(far);
+  e.insert(nearby);
+  expectWellFormed(e.list);
+  expectPointwiseMin(e.list, {far, nearby}, 0.0, kL);
+  EXPECT_EQ(e.total[DegeneracyKind::D4], 0u);
+  EXPECT_EQ(e.total[DegeneracyKind::D1], 1u) << "the far interval's sliver past the crossing";
+}
+
+// Step 3 repeats until no interval is a sliver a neighbour may take: a sliver kept because no
+// neighbour could take it can become one once a later sliver was merged into it. Here the last
+// update's sliver lands inside an interval, neither of whose two pieces beside it may take it;
+// the piece after it, a sliver too, is merged into it, and the two together, still shorter than
+// their ε, now border the next interval, which is shorter there and takes them. (Five updates
+// from a random search over sequences of near-equal distances on one edge.)
+TEST(Algorithm2, ASliverGrownByALaterSliverIsRemovedInTheSameUpdate) {
+  Edge1 e;
+  e.insert(make(0x1.1336a4530195ap+3, 0x1.13f130431fadfp+3,
+                Vec2(0x1.f402fc4e75a18p+2, 0x1.01ec566ac1e7ap+0), 0x1.4aae6fa9aa0dcp-2));
+  e.insert(make(0x1.1336a45307382p+3, 0x1.25a250047def6p+3,
+                Vec2(0x1.10bc6cdaa342ap+2, 0x1.8a715a1b0ff62p+0), 0x1.da6c55a642dfdp-2));
+  e.insert(make(0x1.25a25004a67acp+3, 0x1.25a25004a6e45p+3,
+                Vec2(0x1.a131f89a39124p+2, 0x1.07e3a653b0e8ep+2), 0x1.b097677a16833p-1));
+  e.insert(make(0x1.35d9b129798f6p+2, 0x1.25a25004a69dfp+3,
+                Vec2(0x1.a131f89a3bd1fp+2, 0x1.07e3a653b6684p+2), 0x1.0a178252200ddp-1));
+  e.insert(make(0x1.1336a452f3fa6p+3, 0x1.1336a453009f5p+3,
+                Vec2(0x1.f402fc4e72e1dp+2, 0x1.01ec566aabea2p+0), 0x1.a861f9552b62ap-2));
+  expectWellFormed(e.list);
+  for (const Interval& w : e.list.intervals())
+    EXPECT_GE(w.length(), tinyLength(w, kL)) << "a sliver left at [" << w.b0 << ", " << w.b1 << "]";
+}
+
 TEST(Algorithm2, Step5MergesNeighboursWithTheSameSource) {
   Edge1 e;
   e.insert(make(0.0, 4.0, Vec2(5.0, 2.0), 1.0));
