@@ -448,7 +448,10 @@ def main():
             if not build(a.worktree, preset, os.devnull):
                 sys.exit("the unmutated source does not build with the %s preset" % preset)
         os.makedirs(os.path.dirname(a.results), exist_ok=True)
-        log = os.path.join(os.path.dirname(a.results), "log.txt")
+        # The log stays in the build tree whatever the results file is (a results file kept under
+        # docs/ to resume a run on another machine must not leave the build output beside it).
+        log = os.path.join(ROOT, "build", "mutation", "log.txt")
+        os.makedirs(os.path.dirname(log), exist_ok=True)
         for i, m in enumerate(todo, start=1):
             start = time.time()
             sys.stderr.write("[%d/%d] %s ... " % (i, len(todo), m["id"]))
