@@ -5,7 +5,8 @@
 // propagated child; Euclidean ≤ d ≤ edge-graph Dijkstra; |d(u) − d(v)| ≤ |uv|; edge-midpoint
 // queries within their ends' bounds; the traced path as long as the distance; on planar meshes
 // d equals the Euclidean (rectangle) or planar-domain distance to 1e-9 × diagonal; optionally a
-// stop distance keeps exactly the distances within it, and d(a, b) = d(b, a).
+// stop distance keeps exactly the distances within it, a solve stopped by targets keeps theirs
+// and every distance within its radius, and d(a, b) = d(b, a).
 // Format, check and seeds: verify/include/geodex/verify/cases/fuzz_solver.h.
 #include "decode.h"
 

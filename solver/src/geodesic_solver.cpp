@@ -91,7 +91,11 @@ void GeodesicSolver::solve(std::span<const SurfacePoint> sources, const SolveOpt
 
   double radius = kInfinity;
   std::uint64_t pops = 0;
-  double targetBound = targets.empty() ? -1.0 : kInfinity;
+  // The largest distance of the targets, looked at again every `targets.size()` pops (one target
+  // a pop, amortized): a solve for a target near the source stops near it, not 256 pops later.
+  double targetBound = kInfinity;
+  const std::uint64_t targetBoundPeriod = std::max<std::uint64_t>(1, targets.size());
+  std::uint64_t nextTargetBoundAt = 0;
   while (!queue_.empty()) {
     const QueueEntry top = queue_.front();  // a copy: pushes below may move the entry
     prefetchAhead();
@@ -103,7 +107,10 @@ void GeodesicSolver::solve(std::span<const SurfacePoint> sources, const SolveOpt
     }
     if (!targets.empty()) {
       // Distances only decrease, so a bound computed earlier stays an upper bound.
-      if ((pops & 255) == 0 || bound >= targetBound) targetBound = targetsMaxDistance(targets);
+      if (pops >= nextTargetBoundAt) {
+        targetBound = targetsMaxDistance(targets);
+        nextTargetBoundAt = pops + targetBoundPeriod;
+      }
       if (bound >= targetBound) {
         radius = bound;
         break;

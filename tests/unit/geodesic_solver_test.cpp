@@ -328,6 +328,29 @@ TEST(SolverApi, TargetsStopEarlyWithTheirDistancesFinal) {
   EXPECT_LT(solver.stats().radius, 1.0);
 }
 
+// A target near the source is final after a few windows: the solve stops at the first queue
+// bucket beyond it (half an edge on this grid), not after a fixed number of windows.
+TEST(SolverApi, ATargetTwoEdgesFromTheSourceStopsTheSolveWithinAnEdgeOfIt) {
+  const TriangleSoup soup = verify::gridMesh(20, 20, 1.0, 1.0);
+  const Mesh mesh(soup);
+  const double edge = 1.0 / 20;
+  for (const SurfacePoint& target : {SurfacePoint::atVertex(2), SurfacePoint::onEdge(1, 2, 0.5),
+                                     SurfacePoint::inFace(1, 0.2, 0.3, 0.5)}) {
+    SolveOptions options;
+    options.targets = {target};
+    GeodesicSolver solver(mesh);
+    solver.solve(std::vector<SurfacePoint>{SurfacePoint::atVertex(0)}, options);
+    const double expected = verify::surfacePointPosition(soup, target).norm();
+    EXPECT_NEAR(solver.distance(target), expected, 1e-12) << formatSurfacePoint(target);
+    EXPECT_GE(solver.stats().radius, expected) << formatSurfacePoint(target);
+    EXPECT_LE(solver.stats().radius, expected + edge) << formatSurfacePoint(target);
+    const auto d = solver.vertexDistances();
+    for (Index v = 0; v < d.size(); ++v) {
+      if (soup.positions[v].norm() > expected + 2 * edge) EXPECT_EQ(d[v], kInfinity) << v;
+    }
+  }
+}
+
 TEST(SolverApi, DistanceAtAnyPointAndPathLengthAgree) {
   const TriangleSoup soup = verify::jitteredGridMesh(10, 10, 1.0, 1.0, 0.12, 11);
   const Mesh mesh(soup);

@@ -161,6 +161,12 @@ std::optional<SolverCase> makeSolverCase(const SolverSpec& s) {
   for (const SourceSpec& src : s.sources) c.sources.push_back(makeSource(src, soup));
   if ((s.flags & 1) != 0) c.stopDistance = std::abs(fieldValue(s.stop, 0, 64, unit, unit));
   c.checkSymmetry = (s.flags & 2) != 0;
+  if ((s.flags & 4) != 0) {
+    const auto k = static_cast<Index>(s.flags >> 3);
+    const double third = 1.0 / 3.0;
+    c.targets = {SurfacePoint::atVertex(k % static_cast<Index>(soup.positions.size())),
+                 SurfacePoint::inFace(k % static_cast<Index>(soup.faces.size()), third, third, third)};
+  }
   return c;
 }
 
@@ -384,6 +390,36 @@ bool checkStopDistance(const SolvedCase& s, Verdict& v) {
   return true;
 }
 
+/// With targets, a second solve that stops once they are final gives them the distances the
+/// whole solve gives them, and every vertex distance it keeps (final up to its radius) too.
+bool checkTargets(const SolvedCase& s, Verdict& v) {
+  if (s.c.targets.empty()) return true;
+  GeodesicSolver targeted(s.mesh);
+  SolveOptions options;
+  options.targets = s.c.targets;
+  if (!solveChecked(targeted, s.c.sources, options, v)) return v.message += s.where(), false;
+  const auto agree = [&](double got, double whole) {
+    return got == whole || std::abs(got - whole) <= kRel * (whole + s.diag);
+  };
+  for (const SurfacePoint& t : s.c.targets) {
+    const double got = targeted.distanceInMeshUnits(t), whole = s.solver.distanceInMeshUnits(t);
+    if (!agree(got, whole))
+      return fail(v, "targets", "target " + formatSurfacePoint(t) + " is at " + fmt(got) +
+                                    " when it stops the solve, " + fmt(whole) + " after the whole solve" + s.where()),
+             false;
+  }
+  const double radius = targeted.stats().radius * s.mesh.meshUnit().inverse;
+  const auto ds = targeted.vertexDistancesInMeshUnits();
+  for (Index x = 0; x < s.d.size(); ++x) {
+    const bool final = s.d[x] <= radius - kRel * (radius + s.diag);
+    if ((std::isfinite(ds[x]) || final) && !agree(ds[x], s.d[x]))
+      return fail(v, "targets", "vertex " + std::to_string(x) + " at " + fmt(s.d[x]) + " gets " + fmt(ds[x]) +
+                                    " from the solve the targets stopped at radius " + fmt(radius) + s.where()),
+             false;
+  }
+  return true;
+}
+
 /// When asked, d(a, b) = d(b, a) for a single vertex source a and the farthest vertex b.
 bool checkSymmetricDistance(const SolvedCase& s, Index farthest, Verdict& v) {
   const SolverCase& c = s.c;
@@ -432,6 +468,7 @@ Verdict checkSolver(const SolverCase& c) {
   if (!checkEdgeMidpoints(s, v)) return v;
   if (!checkTracedPath(s, farthest, v)) return v;
   if (!checkStopDistance(s, v)) return v;
+  if (!checkTargets(s, v)) return v;
   checkSymmetricDistance(s, farthest, v);
   return v;
 }
@@ -445,6 +482,7 @@ void describe(const SolverCase& c, std::ostream& out) {
       << describeSoup(c.soup);
   for (const SurfacePoint& s : c.sources) out << "source " << formatSurfacePoint(s) << "\n";
   if (c.stopDistance) out << "stop-distance " << *c.stopDistance << "\n";
+  for (const SurfacePoint& t : c.targets) out << "target " << formatSurfacePoint(t) << "\n";
   if (c.checkSymmetry) out << "check-symmetry\n";
 }
 
@@ -580,8 +618,9 @@ std::vector<Seed> solverSeeds() {
                 {atVertex(0)})),
     solver("closed-tetrahedron-edge-source",
            soup({{0, 0, 0}, {6, 0, 0}, {3, 5, 0}, {3, 2, 5}}, {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {2, 0, 3}}, {onEdge(0, 0, n(5))})),
-    // Options: a stop distance half-way, and d(a, b) = d(b, a).
+    // Options: a stop distance half-way, targets near the source, and d(a, b) = d(b, a).
     solver("stop-distance-half-way", grid(4, 4, 0, {}, {}, {atVertex(0)}, 1, n(3))),
+    solver("targets-vertex-and-face-near-the-source", grid(4, 4, 0, {}, {}, {atVertex(0)}, 4 | (6 << 3))),
     solver("symmetry-vertex-to-farthest",
            grid(3, 3, 3, {0, 1, 2, 1, 2, 1, 2, 1, 0, 1, 0, 1, 2, 1, 2, 1}, {}, {atVertex(0)}, 2)),
     // Path tracing through a zero-area face: the tracer prices each step through every face at

@@ -5,7 +5,8 @@
 // faces. Checks: the full InvariantChecker and the unfolding check during the solve; Euclidean
 // lower bound, edge-graph Dijkstra upper bound, Lipschitz along edges, edge-midpoint queries
 // within their bounds, path length = distance; planar meshes agree with the Euclidean (convex)
-// or planar-domain distance to 1e-9 × diagonal; optionally a stop distance and d(a, b) = d(b, a).
+// or planar-domain distance to 1e-9 × diagonal; optionally a stop distance, targets and
+// d(a, b) = d(b, a).
 // Its libFuzzer main is fuzz/fuzz_solver.cpp.
 
 #include <array>
@@ -50,7 +51,9 @@ struct SolverSpec {
   std::vector<std::array<std::uint8_t, 3>> faces;  ///< indices mod #points
   // --- both
   std::vector<SourceSpec> sources;  ///< count 1 + byte mod 3
-  /// bit 0: solve again with stopDistance = stop and compare; bit 1: check d(a, b) = d(b, a).
+  /// bit 0: solve again with stopDistance = stop and compare; bit 1: check d(a, b) = d(b, a);
+  /// bit 2: solve again with two targets, vertex k mod #vertices and the centroid of face k mod
+  /// #faces, k = flags >> 3, and compare.
   std::uint8_t flags = 0;
   Quantity stop;  ///< ∈ [0, 64] lattice units
 };
@@ -61,6 +64,7 @@ struct SolverCase {
   TriangleSoup soup;
   std::vector<SurfacePoint> sources;
   std::optional<double> stopDistance;
+  std::vector<SurfacePoint> targets;  ///< for the target solve; empty: none
   bool checkSymmetry = false;
   bool planar = false;     ///< a flat grid without moved vertices: the planar oracles apply
   bool rectangle = false;  ///< … and without removed cells: convex, distances are Euclidean
