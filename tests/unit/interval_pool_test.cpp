@@ -26,6 +26,13 @@ TEST(IntervalPool, AListReservesTheSmallestSizeClassThatHoldsIt) {
   }
 }
 
+// The size classes end at a chunk (2^16 intervals): a list longer than that reserves exactly its
+// length, a block of its own, as no class would come back to it.
+TEST(IntervalPool, AListLongerThanAChunkReservesExactlyItsLength) {
+  for (std::size_t n = (std::size_t{1} << 16) + 1; n <= (std::size_t{1} << 18); n += 997)
+    ASSERT_EQ(IntervalPool::capacityFor(n), n) << "n = " << n;
+}
+
 // A block a list gave back is the next one handed out for its size class, so that the wavefront,
 // freeing a small block on one edge as it needs one on the next, keeps reusing the same memory.
 TEST(IntervalPool, AFreedBlockIsTheNextOneHandedOutForItsSize) {
@@ -39,6 +46,16 @@ TEST(IntervalPool, AFreedBlockIsTheNextOneHandedOutForItsSize) {
     pool.deallocate(other, capacity);
     EXPECT_EQ(pool.allocate(capacity), other);
   }
+}
+
+// A recycled pool forgets its blocks and carves the next solve's lists from the start of its
+// first chunk again: a solver re-run on the same mesh holds the memory of one solve, not two.
+TEST(IntervalPool, ARecycledPoolCarvesFromTheStartOfItsFirstChunkAgain) {
+  IntervalPool pool;
+  Interval* const first = pool.allocate(4);
+  for (int i = 0; i < 100; ++i) pool.allocate(8);
+  pool.recycle();
+  EXPECT_EQ(pool.allocate(4), first);
 }
 
 }  // namespace
