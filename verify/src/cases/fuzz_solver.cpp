@@ -398,8 +398,9 @@ bool checkTargets(const SolvedCase& s, Verdict& v) {
   SolveOptions options;
   options.targets = s.c.targets;
   if (!solveChecked(targeted, s.c.sources, options, v)) return v.message += s.where(), false;
+  // (Both finite, or the same infinity: a finite distance where the whole solve has none is wrong.)
   const auto agree = [&](double got, double whole) {
-    return got == whole || std::abs(got - whole) <= kRel * (whole + s.diag);
+    return got == whole || (std::isfinite(got) && std::isfinite(whole) && std::abs(got - whole) <= kRel * (whole + s.diag));
   };
   for (const SurfacePoint& t : s.c.targets) {
     const double got = targeted.distanceInMeshUnits(t), whole = s.solver.distanceInMeshUnits(t);
