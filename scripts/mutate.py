@@ -316,15 +316,22 @@ def build(work, preset, log, target=None):
     return code == 0
 
 
-def mutate_one(work, m, presets, log):
+def plant(work, m):
+    """Writes mutant m into the checkout at work; False when its source line has changed."""
     path = os.path.join(work, m["file"])
     with open(path) as f:
         lines = f.read().split("\n")
     if lines[m["line"] - 1] != m["before"]:
-        return {"verdict": "stale", "by": "the source line changed"}
+        return False
     lines[m["line"] - 1] = m["after"]
     with open(path, "w") as f:
         f.write("\n".join(lines))
+    return True
+
+
+def mutate_one(work, m, presets, log):
+    if not plant(work, m):
+        return {"verdict": "stale", "by": "the source line changed"}
     try:
         for preset in presets:
             killed, by = test_preset(work, preset, log)

@@ -80,12 +80,8 @@ import mutate
 rev = subprocess.run(["git", "rev-parse", sys.argv[2]], stdout=subprocess.PIPE, text=True).stdout.strip()
 ms = [m for m in mutate.catalogue(1, rev) if m["id"].endswith(sys.argv[3])]
 assert len(ms) == 1, "no single mutant %s in the catalogue of %s" % (sys.argv[3], rev)
-m = ms[0]
-lines = open(m["file"]).read().split("\n")
-assert lines[m["line"] - 1] == m["before"]
-lines[m["line"] - 1] = m["after"]
-open(m["file"], "w").write("\n".join(lines))
-print("planted", m["id"])
+assert mutate.plant(".", ms[0]), "the source line of %s has changed" % ms[0]["id"]
+print("planted", ms[0]["id"])
 PY
 cmake --build --preset release --target geodex_cli -j2 > /dev/null
 rm -rf "${OUT:?}/$HASH" && run build/release/bin/geodex "$OUT/$HASH"
