@@ -75,6 +75,7 @@ void writeStats(std::ostream& err, const GeodesicSolver& solver, double loadSeco
   put("max intervals/edge:", std::to_string(s.maxIntervalsPerEdge));
   put("intervals at end:", std::to_string(s.intervalsAtEnd));
   put("shadows closed:", std::to_string(s.shadowsClosed));
+  put("dropped at edge end:", std::to_string(s.windowsDroppedAtEdgeEnd));
   for (std::size_t i = 0; i < targets.size(); ++i) {
     err << "target " << targetSpecs[i] << ": " << formatDistance(solver.distance(targets[i]))
         << '\n';

@@ -156,6 +156,7 @@ class Solver {
     s["max_intervals_per_edge"] = st.maxIntervalsPerEdge;
     s["intervals_at_end"] = st.intervalsAtEnd;
     s["shadows_closed"] = st.shadowsClosed;
+    s["windows_dropped_at_edge_end"] = st.windowsDroppedAtEdgeEnd;
     const DegeneracyCounters& c = solver_.counters();
     s["cases"] = c.cases;
     s["degenerate_cases"] = c.degenerateCases;  // a G1–G5 leaf or a D1–D4 repair (docs/paper.md)

@@ -62,6 +62,10 @@ struct TeeObserver : SolverObserver {
     first.onEdgeUpdate(e);
     second.onEdgeUpdate(e);
   }
+  void onWindowDropped(const WindowDroppedEvent& e) override {
+    first.onWindowDropped(e);
+    second.onWindowDropped(e);
+  }
   void onFinish(const GeodesicSolver& s) override {
     first.onFinish(s);
     second.onFinish(s);

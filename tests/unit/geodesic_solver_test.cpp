@@ -330,6 +330,30 @@ TEST(SolverApi, TargetsStopEarlyWithTheirDistancesFinal) {
 
 // A target near the source is final after a few windows: the solve stops at the first queue
 // bucket beyond it (half an edge on this grid), not after a fixed number of windows.
+// The edge-end rule: a pseudo-source's window on the edge across one of its faces is dropped when
+// a path through an end of that edge is already shorter at the window's far end. On a planar grid
+// the boundary vertices are pseudo-sources whose windows into the grid lose to the direct ones
+// there: they are dropped, the full tier samples each against the final distances, and every
+// distance is still the Euclidean one.
+TEST(EdgeEndRule, BoundaryVerticesWindowsIntoAPlanarGridAreDroppedAndEveryDistanceStaysEuclidean) {
+  const TriangleSoup soup = verify::gridMesh(12, 12, 1.0, 1.0);
+  const Mesh mesh(soup);
+  GeodesicSolver solver(mesh);
+  verify::InvariantChecker checker(verify::CheckLevel::Full, /*throwOnViolation=*/false);
+  solver.setObserver(&checker);
+  solver.solve(std::vector<SurfacePoint>{SurfacePoint::atVertex(0)});
+  if (const auto* v = checker.firstViolation()) ADD_FAILURE() << v->what();
+  EXPECT_GT(solver.stats().windowsDroppedAtEdgeEnd, 0u);
+  std::uint64_t sampled = 0;
+  for (const auto& t : checker.tallies())
+    if (t.name == "dropped-window-dominated") sampled = t.checked;
+  EXPECT_GE(sampled, 5 * solver.stats().windowsDroppedAtEdgeEnd);
+  const auto euclid = verify::euclideanDistances(soup.positions, soup.positions[0]);
+  for (Index v = 0; v < mesh.numVertices(); ++v)
+    EXPECT_NEAR(solver.vertexDistances()[v], euclid[v], 1e-12 * mesh.boundingBoxDiagonal())
+        << "vertex " << v;
+}
+
 TEST(SolverApi, ATargetTwoEdgesFromTheSourceStopsTheSolveWithinAnEdgeOfIt) {
   const TriangleSoup soup = verify::gridMesh(20, 20, 1.0, 1.0);
   const Mesh mesh(soup);

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iterator>
@@ -364,6 +365,48 @@ TEST(InvariantChecker, EndOfRunCoverageAndVertexAgreementFail) {
       EXPECT_EQ(v.invariant(), "vertex-agreement");
     }
   }
+}
+
+// A window the edge-end rule dropped must be nowhere shorter than the final distances. One of
+// the final windows of an interior edge, shortened by a constant, stands for a window dropped
+// wrongly: by three times the check's tolerance it fails, by a third of it (what the rule's own
+// vertex distance may carry) it passes.
+TEST(InvariantChecker, ADroppedWindowShorterThanTheFinalDistancesByMoreThanItsToleranceFails) {
+  const Mesh mesh(gridMesh(4, 4, 1.0, 1.0));
+  GeodesicSolver solver(mesh);
+  InvariantChecker checker(CheckLevel::Full, /*throwOnViolation=*/false);
+  solver.setObserver(&checker);
+  solver.solve(std::vector<SurfacePoint>{SurfacePoint::atVertex(0)});
+  ASSERT_EQ(checker.violations(), 0u);
+  Index edge = kNoIndex;
+  Interval w;
+  for (Index e = 0; e < mesh.numEdges() && edge == kNoIndex; ++e) {
+    for (const Interval& iv : solver.edgeIntervals()[e].intervals()) {
+      if (mesh.edge(e).face[1 - iv.side] == kNoIndex || iv.sigma != 0.0) continue;
+      edge = e;
+      w = iv;
+      break;
+    }
+  }
+  ASSERT_NE(edge, kNoIndex);
+  const Edge& E = mesh.edge(edge);
+  double longestAtEnd = 0.0;
+  for (Index e : mesh.vertexEdges(E.vertex[0]))
+    longestAtEnd = std::max(longestAtEnd, mesh.edge(e).length);
+  const auto toleranceAt = [&](double d) {
+    return tol::droppedWindowTolerance(d, E.length, longestAtEnd);
+  };
+  const double farthest = std::max(w.distanceAt(w.b0), w.distanceAt(w.b1)) + E.length;
+  const auto violatedBy = [&](double shorterBy) {
+    InvariantChecker fresh(CheckLevel::Full, /*throwOnViolation=*/false);
+    Interval dropped = w;
+    dropped.sigma -= shorterBy;
+    fresh.onWindowDropped({edge, E.length, dropped, E.vertex[0], 0.0});
+    fresh.onFinish(solver);
+    return fresh.firstViolation() != nullptr ? fresh.firstViolation()->invariant() : std::string();
+  };
+  EXPECT_EQ(violatedBy(3.0 * toleranceAt(farthest)), "dropped-window-dominated");
+  EXPECT_EQ(violatedBy(toleranceAt(w.minDistance()) / 3.0), "");
 }
 
 // A window left pending where there is a face to cross means the wavefront stopped early (the

@@ -69,6 +69,7 @@ class ObserverPair : public SolverObserver {
   ObserverPair(SolverObserver& a, SolverObserver& b) : a_(a), b_(b) {}
   void onPropagation(const PropagationEvent& e) override { a_.onPropagation(e); b_.onPropagation(e); }
   void onEdgeUpdate(const EdgeUpdateEvent& e) override { a_.onEdgeUpdate(e); b_.onEdgeUpdate(e); }
+  void onWindowDropped(const WindowDroppedEvent& e) override { a_.onWindowDropped(e); b_.onWindowDropped(e); }
   void onFinish(const GeodesicSolver& s) override { a_.onFinish(s); b_.onFinish(s); }
 
  private:

@@ -16,7 +16,8 @@ namespace {
 const char* const kNames[] = {"sorted",          "in-range",          "no-overlap",
                               "no-tiny-gap",     "no-tiny-interval",  "finite-non-negative",
                               "real-source",     "continuous-at-eq1", "pointwise-min",
-                              "full-coverage",   "vertex-agreement",  "wavefront-exhausted"};
+                              "full-coverage",   "vertex-agreement",  "wavefront-exhausted",
+                              "dropped-window-dominated"};
 
 std::string describe(const Interval& w) {
   std::ostringstream os;
@@ -795,10 +796,69 @@ void InvariantChecker::checkPointwiseMin(const EdgeUpdateEvent& e, const Changed
 
 // ===  End of the solve ===========================================================================
 
+void InvariantChecker::onWindowDropped(const WindowDroppedEvent& e) {
+  if (level_ == CheckLevel::Full) dropped_.push_back({e.edge, e.window, e.vertex, e.vertexDistance});
+}
+
 void InvariantChecker::onFinish(const GeodesicSolver& solver) {
   if (level_ != CheckLevel::Full) return;
+  const bool ranToEnd = !std::isfinite(solver.stats().radius);
   checkFinal(solver.mesh(), solver.edgeIntervals(), solver.vertexDistancesInMeshUnits(), solver.sources(),
-             !std::isfinite(solver.stats().radius));
+             ranToEnd);
+  if (ranToEnd) checkDroppedWindows(solver);
+  dropped_.clear();
+}
+
+// The solver dropped these windows as longer everywhere than a path through an end of their edge
+// (GeodesicSolver::dominatedAtAnEdgeEnd). Whatever the rule's reasoning, the final distances must
+// then be nowhere above them: sampled at the window's ends and quarters against the edge's final
+// list, and at the three inner samples' rays a quarter of the way into the face the window would
+// have crossed against the solver's distance there (skipped where the ray has left the face).
+void InvariantChecker::checkDroppedWindows(const GeodesicSolver& solver) {
+  const Mesh& mesh = solver.mesh();
+  for (const DroppedWindow& dw : dropped_) {
+    const Edge& E = mesh.edge(dw.edge);
+    const Interval& w = dw.window;
+    double longestAtEnd = 0.0;
+    for (Index e : mesh.vertexEdges(dw.vertex)) longestAtEnd = std::max(longestAtEnd, mesh.edge(e).length);
+    const auto list = solver.edgeIntervals()[dw.edge].intervals();
+    const Index f = E.face[1 - w.side];
+    const Vec2 s(w.source.x(), -w.source.y());  // in the frame of f, whose apex has y > 0
+    // (face: kNoIndex for a point of the edge, else the face beyond it the point is in.)
+    auto check = [&](double got, double own, Index face, double x) {
+      const double slack = tol::droppedWindowTolerance(own, E.length, longestAtEnd);
+      const double error = (got - own) / (own + E.length);
+      const bool ok = got <= own + slack;
+      std::string why;
+      if (!ok) {
+        std::ostringstream os;
+        os << std::setprecision(17) << "window " << describe(w) << " of edge " << dw.edge << " ("
+           << E.vertex[0] << "-" << E.vertex[1] << "), dropped as longer than the path through vertex "
+           << dw.vertex << " (at " << dw.vertexDistance << "), is " << own
+           << (face == kNoIndex ? " on its edge at x = " : " beyond it in face " + std::to_string(face) + ", on the ray through x = ")
+           << x << ", where the solve ends at " << got;
+        why = os.str();
+      }
+      record(DroppedWindowDominated, ok, std::max(0.0, error), why, nullptr);
+    };
+    for (int i = 0; i <= 4; ++i) {
+      const double x = i == 4 ? w.b1 : w.b0 + 0.25 * i * (w.b1 - w.b0);
+      check(listDistance(list, x), w.distanceAt(x), kNoIndex, x);
+      if (f == kNoIndex || i == 0 || i == 4) continue;
+      const FaceFrame& fr = mesh.frame(f, dw.edge);
+      const Vec2 p(x, 0.0), ray = p - s;
+      if (!(ray.y() > 0.0 && fr.apexPos.y() > 0.0)) continue;
+      const Vec2 q = p + (0.25 * fr.apexPos.y() / ray.y()) * ray;
+      const double atApex = 0.25, atV2 = (q.x() - atApex * fr.apexPos.x()) / E.length, atV0 = 1.0 - atV2 - atApex;
+      if (!(atV0 >= 0.0 && atV2 >= 0.0)) continue;
+      std::array<double, 3> bary{};
+      const auto& corners = mesh.face(f);
+      for (int k = 0; k < 3; ++k)
+        bary[k] = corners[k] == E.vertex[0] ? atV0 : (corners[k] == E.vertex[1] ? atV2 : atApex);
+      const double got = solver.distanceInMeshUnits(SurfacePoint::inFace(f, bary[0], bary[1], bary[2]));
+      check(got, w.sigma + (q - s).norm(), f, x);
+    }
+  }
 }
 
 void InvariantChecker::checkFinal(const Mesh& mesh, std::span<const EdgeIntervals> edges,

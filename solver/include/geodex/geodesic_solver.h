@@ -44,6 +44,9 @@ struct SolveStats {
   /// Thin gaps closed once the wavefront had passed (tol::kShadowSewRel;
   /// EdgeIntervals::closeShadows).
   std::uint64_t shadowsClosed = 0;
+  /// Pseudo-source windows dropped before Algorithm 2: a path through an end of their edge is
+  /// shorter on all of them (the edge-end rule, GeodesicSolver::dominatedAtAnEdgeEnd).
+  std::uint64_t windowsDroppedAtEdgeEnd = 0;
   double radius = kInfinity;  ///< distances up to this are final (inf: ran to the end), file units
 };
 
@@ -112,6 +115,7 @@ class GeodesicSolver {
   void queuePending(Index edge, const Interval& w);
   void prefetchAhead() const;
   void updateVertex(Index v, double d);
+  bool dominatedAtAnEdgeEnd(Index edge, const Interval& w);
   void relayFanThroughVertex(Index v);
   void createPseudoSourceWindows(Index v, double sigma, std::int32_t origin, int depth = 0,
                                  Index from = kNoIndex);

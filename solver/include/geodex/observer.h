@@ -35,11 +35,24 @@ struct EdgeUpdateEvent {
   const Fig6Branch* branch;
 };
 
+/// A window the solver drops before adding it to its edge (the edge-end rule,
+/// GeodesicSolver::dominatedAtAnEdgeEnd): a path through `vertex`, an end of the edge, at
+/// `vertexDistance` and then along the edge, is shorter at the window's far end from that vertex,
+/// so the window is longer than a real path everywhere on the edge and beyond it.
+struct WindowDroppedEvent {
+  Index edge;
+  double edgeLength;
+  const Interval& window;  ///< as it would have been added (edge coordinates, side, σ)
+  Index vertex;            ///< the end of the edge whose path is shorter
+  double vertexDistance;   ///< its distance when the window was dropped (mesh units)
+};
+
 class SolverObserver {
  public:
   virtual ~SolverObserver() = default;
   virtual void onPropagation(const PropagationEvent&) {}
   virtual void onEdgeUpdate(const EdgeUpdateEvent&) {}
+  virtual void onWindowDropped(const WindowDroppedEvent&) {}
   /// After the wavefront is exhausted (or stopped); the solver's results are queryable.
   virtual void onFinish(const GeodesicSolver&) {}
 };

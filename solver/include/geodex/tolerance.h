@@ -204,6 +204,16 @@ inline double vertexAgreementTolerance(double distance, double edgeLength, doubl
          (kRoundingRel + kPointwiseMinRel) * longestIncidentEdge;
 }
 
+/// How far the final distance may lie above a window the edge-end rule dropped (the full tier's
+/// 'dropped-window-dominated', at a point of its edge or of the face beyond): the rule took the
+/// window as longer than d(a) + |a x|, with d(a) the end a's distance during the solve, which is
+/// held to vertexAgreementTolerance of what a's edges agree on; and the final list holds its
+/// function to kPointwiseMinRel × (d + L) of the minimum of what reached it.
+inline double droppedWindowTolerance(double distance, double edgeLength, double longestAtEnd) {
+  return vertexAgreementTolerance(distance, edgeLength, longestAtEnd) +
+         kPointwiseMinRel * (distance + edgeLength);
+}
+
 // ===  Path tracing (path.cpp) ===================================================================
 
 /// Two points of a traced path closer than this × the local length (the edge's, or the crossed

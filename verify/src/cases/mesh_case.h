@@ -44,6 +44,9 @@ class UnfoldingChecker : public SolverObserver {
     if (next_) next_->onEdgeUpdate(e);
     if (e.branch != nullptr) checkChild(e);
   }
+  void onWindowDropped(const WindowDroppedEvent& e) override {
+    if (next_) next_->onWindowDropped(e);
+  }
   void onFinish(const GeodesicSolver& s) override {
     if (next_) next_->onFinish(s);
   }

@@ -16,7 +16,9 @@
 //     contract, and within the slack step 4 may sew); and at the end,
 //     every edge reached is fully covered, every vertex's distance is the same from all its
 //     edges (the final field is continuous), and no window that has a face to cross is still
-//     pending (the wavefront was exhausted).
+//     pending (the wavefront was exhausted); and every window the solver dropped by the
+//     edge-end rule is nowhere shorter than the final distances, on its edge or in the face it
+//     would have crossed.
 // A violation throws InvariantViolation, which carries everything needed to replay it.
 
 #include <memory>
@@ -65,6 +67,8 @@ class InvariantChecker : public SolverObserver {
   /// from the empty one (as an observer set before GeodesicSolver::solve does); one update over a
   /// list it never saw is checked only where that update changed it.
   void onEdgeUpdate(const EdgeUpdateEvent& e) override;
+  /// Full tier: kept until onFinish, which samples the window against the final distances.
+  void onWindowDropped(const WindowDroppedEvent& e) override;
   void onFinish(const GeodesicSolver& solver) override;
   /// The end-of-run invariants (full tier) on given lists: every edge in a component holding a
   /// source fully covered (when the solve ran to the end), every vertex distance equal to what
@@ -88,7 +92,7 @@ class InvariantChecker : public SolverObserver {
  private:
   enum Id { Sorted, InRange, NoOverlap, NoTinyGap, NoTinyInterval, FiniteNonNegative, RealSource,
             ContinuousAtEq1, PointwiseMin, FullCoverage, VertexAgreement, WavefrontExhausted,
-            kNumInvariants };
+            DroppedWindowDominated, kNumInvariants };
   void record(Id id, bool ok, double error, const std::string& why, const EdgeUpdateEvent* e);
 
   // The checks of one edge update, in the order onEdgeUpdate makes them; [lo, hi) is the part of
@@ -98,6 +102,7 @@ class InvariantChecker : public SolverObserver {
   void checkWellFormed(const EdgeUpdateEvent& e, std::size_t lo, std::size_t hi);
   void checkContinuityAtEq1(const EdgeUpdateEvent& e, std::size_t lo, std::size_t hi);
   void checkExhausted(const Mesh& mesh, Index e, std::span<const Interval> list);
+  void checkDroppedWindows(const GeodesicSolver& solver);
   void checkPointwiseMin(const EdgeUpdateEvent& e, const ChangedRange& changed, std::size_t lo,
                          std::size_t hi);
   // The samples that need the general evaluation; those well inside a piece are evaluated as the
@@ -117,6 +122,14 @@ class InvariantChecker : public SolverObserver {
   // The pointwise-minimum samples and the endpoints of lists out of order (sorted there), reused
   // between updates.
   std::vector<double> samples_, ends_;
+  // The windows dropped by the edge-end rule in this solve (full tier).
+  struct DroppedWindow {
+    Index edge;
+    Interval window;
+    Index vertex;
+    double vertexDistance;
+  };
+  std::vector<DroppedWindow> dropped_;
 };
 
 /// Writes a violation as a text reproducer `geodex repro` reads back (format in docs/fuzzing.md).
