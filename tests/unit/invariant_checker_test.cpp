@@ -41,6 +41,14 @@ TEST(InvariantChecker, UnsortedFails) {
 TEST(InvariantChecker, OutOfRangeFails) {
   EXPECT_EQ(brokenInvariant({make(0, kL + 1, Vec2(2, 1))}), "in-range");
 }
+// Step 6 reads a list as ranges of the edge: one of no length, or reversed by a hair, is none
+// (corpus/fuzz_edge_update/regress/in-range-a-list-with-an-empty-and-a-reversed-interval-was-
+// accepted-as-the-list-before).
+TEST(InvariantChecker, AnIntervalOfNoLengthOrReversedIsOutOfRange) {
+  EXPECT_EQ(brokenInvariant({make(0, 4, Vec2(2, 1)), make(4, 4, Vec2(4, 1)), make(4, kL, Vec2(7, 1))}),
+            "in-range");
+  EXPECT_EQ(brokenInvariant({make(0, 4, Vec2(2, 1)), make(4, 4 - 1e-12, Vec2(4, 1))}), "in-range");
+}
 TEST(InvariantChecker, OverlapFails) {
   EXPECT_EQ(brokenInvariant({make(0, 5, Vec2(2, 1)), make(4, kL, Vec2(7, 1))}), "no-overlap");
 }

@@ -151,9 +151,11 @@ std::string InvariantChecker::checkListRange(std::span<const Interval> list, std
         os << "interval " << i << " " << describe(w) << " has a non-finite or negative value";
       });
     }
-    if (w.b0 < 0.0 || w.b1 > L) {
+    // (An interval with no length is no range: Algorithm 2 takes the list as a partition of the
+    // edge, and one with b1 < b0 came through as a fuzzed list before, an overlap with itself.)
+    if (!(w.b0 >= 0.0 && w.b0 < w.b1 && w.b1 <= L)) {
       return fail("in-range", [&](std::ostream& os) {
-        os << "interval " << i << " " << describe(w) << " leaves [0, " << L << "]";
+        os << "interval " << i << " " << describe(w) << " is not a range 0 <= b0 < b1 <= " << L;
       });
     }
     const double tiny = tinyLengthInList(list, i, L);

@@ -2,9 +2,9 @@
 // Algorithm 2 step 6, checked live: an observer the solver calls after every edge update and at
 // the end of a solve. It shares none of the solver's repair logic: it only looks at the lists.
 //
-//   cheap tier (every update): sorted by b0; inside [0, |e|]; no overlap; no gap below ε left
-//     unsewn; no interval shorter than ε; d0, d1, σ finite and ≥ 0; a real unfolded source
-//     (source height ≥ 0, |d0 − d1| ≤ b1 − b0 + ε); the two distances agree at every Eq. 1
+//   cheap tier (every update): sorted by b0; each a range 0 ≤ b0 < b1 ≤ |e|; no overlap; no gap
+//     below ε left unsewn; no interval shorter than ε; d0, d1, σ finite and ≥ 0; a real unfolded
+//     source (source height ≥ 0, |d0 − d1| ≤ b1 − b0 + ε); the two distances agree at every Eq. 1
 //     breakpoint. (Elsewhere neighbours may legitimately disagree mid-run: the ends of an
 //     incoming interval's range are where the wavefront has not arrived yet.)
 //   Both tiers look at what the update rewrote and its neighbours, once they have seen that the
