@@ -328,8 +328,6 @@ TEST(SolverApi, TargetsStopEarlyWithTheirDistancesFinal) {
   EXPECT_LT(solver.stats().radius, 1.0);
 }
 
-// A target near the source is final after a few windows: the solve stops at the first queue
-// bucket beyond it (half an edge on this grid), not after a fixed number of windows.
 // The edge-end rule: a pseudo-source's window on the edge across one of its faces is dropped when
 // a path through an end of that edge is already shorter at the window's far end. On a planar grid
 // the boundary vertices are pseudo-sources whose windows into the grid lose to the direct ones
@@ -354,6 +352,8 @@ TEST(EdgeEndRule, BoundaryVerticesWindowsIntoAPlanarGridAreDroppedAndEveryDistan
         << "vertex " << v;
 }
 
+// A target near the source is final after a few windows: the solve stops at the first queue
+// bucket beyond it (half an edge on this grid), not after a fixed number of windows.
 TEST(SolverApi, ATargetTwoEdgesFromTheSourceStopsTheSolveWithinAnEdgeOfIt) {
   const TriangleSoup soup = verify::gridMesh(20, 20, 1.0, 1.0);
   const Mesh mesh(soup);

@@ -67,7 +67,8 @@ class InvariantChecker : public SolverObserver {
   /// from the empty one (as an observer set before GeodesicSolver::solve does); one update over a
   /// list it never saw is checked only where that update changed it.
   void onEdgeUpdate(const EdgeUpdateEvent& e) override;
-  /// Full tier: kept until onFinish, which samples the window against the final distances.
+  /// Full tier: kept until onFinish, which samples the window against the final distances (a
+  /// solve that throws before its end leaves them to the next onFinish: use a fresh checker then).
   void onWindowDropped(const WindowDroppedEvent& e) override;
   void onFinish(const GeodesicSolver& solver) override;
   /// The end-of-run invariants (full tier) on given lists: every edge in a component holding a
