@@ -100,13 +100,14 @@ case_crash_reported_as_crash() {
 }
 
 # The program hangs and leaves a child behind: both are killed at the time limit, and the run
-# ends in bounded time.
+# ends in bounded time. A stall lasts the hour hang.py sleeps; the run takes 6 s idle and took 31 s
+# beside two fuzzing campaigns (a false kill in the mutation job), so the bound is 120 s.
 case_hang_reported_as_timeout_without_stalling() {
   run --solver "python3 $HERE/hang.py {mesh} {source} {out}" --cases 2 --time-limit 0.5 --minimize-time 3 \
     --out "$FINDINGS"
   expect_rc 1
   expect_findings_only_of timeout
-  ((SECONDS_TAKEN < 30)) || fail "took $SECONDS_TAKEN s"
+  ((SECONDS_TAKEN < 120)) || fail "took $SECONDS_TAKEN s"
   grep -q 'process group was killed' "$(findings_of timeout | head -n 1)/report.txt" || fail "report says no kill"
   grep -q 'hang.py: thinking' "$(findings_of timeout | head -n 1)/report.txt" || fail "output not kept"
   sleep 0.2
