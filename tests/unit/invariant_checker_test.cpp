@@ -196,6 +196,35 @@ TEST(InvariantChecker, IgnoringAnIncomingIntervalBetterOnlyBetweenTwoSamplesFail
   }
 }
 
+// The same narrow dip where the old list is two windows meeting away from it (as lists are: each
+// interval starts where the one before ends), and in an update that removed a D1 sliver far from
+// it: however the checker walks the lists, it finds the dip.
+Update aDipBetweenTwoSamplesBesideANeighbour() {
+  const double spacing = kL / 32, foot = 16.5 * spacing;
+  const Vec2 a(1, 100), b(3, 100);  // equally far at x = 2
+  Update u;
+  u.before = {make(0, 2, a), make(2, kL, b)};
+  const double oldAtFoot = u.before[1].distanceAt(foot), dip = 0.05;
+  u.incoming = make(0, kL, Vec2(foot, 0.01), oldAtFoot - dip - 0.01);
+  EXPECT_LT(u.incoming.distanceAt(foot), oldAtFoot);
+  for (int j = 0; j <= 32; ++j) {
+    const double x = j * spacing;
+    EXPECT_GT(u.incoming.distanceAt(x), u.before[x < 2 ? 0 : 1].distanceAt(x)) << j;
+  }
+  u.after = u.before;
+  u.report.first = 0, u.report.last = 2;
+  return u;
+}
+TEST(InvariantChecker, IgnoringAnIncomingIntervalBetterOnlyBetweenTwoSamplesBesideANeighbourFails) {
+  EXPECT_EQ(violatedBy(aDipBetweenTwoSamplesBesideANeighbour()), "pointwise-min");
+}
+TEST(InvariantChecker,
+     IgnoringAnIncomingIntervalBetterOnlyBetweenTwoSamplesFailsThoughASliverWasRemoved) {
+  Update u = aDipBetweenTwoSamplesBesideANeighbour();
+  u.report.removedTiny = {{9.0, 9.0 + 0.1 * tol::kTinyIntervalRel * kL}};
+  EXPECT_EQ(violatedBy(u), "pointwise-min");
+}
+
 // The incoming window is shorter than the list only over one old interval, narrower than the
 // spacing of the uniform samples and between two of them, and the update keeps the list as it was
 // (reporting, as the solver does, the intervals the incoming range reaches as rewritten): the

@@ -368,6 +368,44 @@ std::array<double, 3> largestDifferenceAt(const Interval& f, const Interval& g, 
   return {inSpan ? num / den : INFINITY, c == 0.0 ? a : INFINITY, d == 0.0 ? b : INFINITY};
 }
 
+// Appends to `out` the points of (lo, hi) where g can lie furthest below f (largestDifferenceAt),
+// those where it does lie below: a dip of g narrower than the uniform sample spacing is at one of
+// them. For the walks that otherwise sample a piece only uniformly; out of line, so that the
+// common walk is compiled as it was without them.
+[[gnu::noinline]] void appendWhereBelow(const Interval& f, const Interval& g, double lo, double hi,
+                                        std::vector<double>& out) {
+  for (const double x : largestDifferenceAt(f, g, lo, hi))
+    if (x > lo && x < hi && g.distanceAt(x) < f.distanceAt(x)) out.push_back(x);
+}
+
+// Where a walk does not know which intervals cover a piece: appendWhereBelow for every two
+// functions of `runs` and the incoming one, over the stretch of [from, to] both reach.
+[[gnu::noinline]] void appendWhereAnyIsBelow(std::span<const std::span<const Interval>> runs,
+                                             const Interval& incoming, double from, double to,
+                                             std::vector<double>& out) {
+  const auto pair = [&](const Interval& f, const Interval& g) {
+    const double lo = std::max({f.b0, g.b0, from}), hi = std::min({f.b1, g.b1, to});
+    if (!(lo < hi)) return;
+    appendWhereBelow(f, g, lo, hi, out);
+    appendWhereBelow(g, f, lo, hi, out);
+  };
+  for (std::size_t r = 0; r < runs.size(); ++r)
+    for (const Interval& w : runs[r]) {
+      pair(w, incoming);
+      for (std::size_t t = r; t < runs.size(); ++t)
+        for (const Interval& v : runs[t])
+          if (&v > &w || t > r) pair(w, v);
+    }
+}
+
+// Merges `extra` (in no order) into the sorted `xs`.
+[[gnu::noinline]] void mergeInto(std::vector<double>& xs, std::vector<double>& extra) {
+  std::sort(extra.begin(), extra.end());
+  const auto walked = std::ssize(xs);
+  xs.insert(xs.end(), extra.begin(), extra.end());
+  std::inplace_merge(xs.begin(), xs.begin() + walked, xs.end());
+}
+
 }  // namespace
 
 // The largest relative error of the list after against min(before, incoming) over the samples,
@@ -450,6 +488,13 @@ std::span<const double> InvariantChecker::pointwiseMinSamples(
   const auto incomingNear = [&](double x) { return x >= reachFrom && x <= reachTo; };
   std::vector<double>& xs = samples_;
   xs.clear();
+  // Points for the sweep found besides the walk's, in no order with its samples (appendWhereBelow):
+  // merged in at the end.
+  std::vector<double>& extra = extraSamples_;
+  extra.clear();
+  const auto withExtra = [&] {
+    if (!extra.empty()) mergeInto(xs, extra);
+  };
 
   // The samples of the piece (p, q) (the midpoint and the uniform samples inside), merged in order
   // with the uniform samples: a uniform sample at or before p (an endpoint, or before the first)
@@ -461,7 +506,9 @@ std::span<const double> InvariantChecker::pointwiseMinSamples(
   double u = nextUniform();
   // Passes the samples below x, untaken: straight to the index floor(x / spacing), whose samples
   // before are a spacing (less a few roundings) below x, then one by one.
-  const auto skipTo = [&](double x) {
+  // (Inlined by request: with the walk's other routes beside it, GCC 12 made it a call, a tenth
+  // of the walk's instructions on armadillo.)
+  const auto skipTo = [&](double x) __attribute__((always_inline)) {
     if (!(u < x)) return;
     if (std::isfinite(x) && e.edgeLength > 0.0)
       k = std::max(k, static_cast<int>(
@@ -505,6 +552,12 @@ std::span<const double> InvariantChecker::pointwiseMinSamples(
     for (std::size_t i = 1; i < ends.size(); ++i)
       if (ends[i] > ends[i - 1]) samplePiece(ends[i - 1], ends[i], false, pushSample);
     for (; std::isfinite(u); u = nextUniform()) xs.push_back(u);
+    // Which intervals cover a piece is not known here: every two functions of the update, over
+    // the stretch both reach, either way round (mutant b07628e0 of docs/mutation.md sent lists of
+    // touching intervals this way, where a dip between two samples went unseen).
+    const std::span<const Interval> runs[] = {beforeNear, rewritten};
+    appendWhereAnyIsBelow(runs, e.incoming, from, to, extra);
+    withExtra();
     return samples_;
   }
 
@@ -621,8 +674,16 @@ std::span<const double> InvariantChecker::pointwiseMinSamples(
                                   : newIs == 2 && incomingHere ? &e.incoming
                                                                : nullptr;
     const bool none = (newIs == 1 && oldHere == nullptr) || (newIs == 2 && !incomingHere);
+    // The routes below that sample a piece only uniformly also take the points where a function
+    // present lies furthest below the one the new list holds.
+    const auto whereBelowHere = [&] {
+      if (newHere == nullptr) return;  // (no function kept: every sample's error is infinite)
+      if (oldHere != nullptr && !same) appendWhereBelow(*newHere, *oldHere, p, q, extra);
+      if (incomingHere && newIs != 1) appendWhereBelow(*newHere, e.incoming, p, q, extra);
+    };
     if (!noSliverRemoved) {
       samplePiece(p, q, same, pushSample);
+      whereBelowHere();
     } else if (other == nullptr && !none) {
       samplePiece(p, q, same, [&](double x) {
         if (x > inFrom && x < inTo)
@@ -630,6 +691,7 @@ std::span<const double> InvariantChecker::pointwiseMinSamples(
         else
           xs.push_back(x);
       });
+      whereBelowHere();
     } else if (!(m > inFrom && m < inTo)) {
       samplePiece(p, q, same, pushSample);  // (no sample is inside by the slack)
     } else {
@@ -657,6 +719,7 @@ std::span<const double> InvariantChecker::pointwiseMinSamples(
     p = q;
   }
   for (; std::isfinite(u); u = nextUniform()) xs.push_back(u);
+  withExtra();
   return samples_;
 }
 

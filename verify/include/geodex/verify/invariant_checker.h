@@ -120,9 +120,9 @@ class InvariantChecker : public SolverObserver {
   bool throw_;
   std::vector<InvariantTally> tallies_;
   std::unique_ptr<InvariantViolation> first_;
-  // The pointwise-minimum samples and the endpoints of lists out of order (sorted there), reused
-  // between updates.
-  std::vector<double> samples_, ends_;
+  // The pointwise-minimum samples, those found besides the walk's, and the endpoints of lists out
+  // of order (sorted there), reused between updates.
+  std::vector<double> samples_, extraSamples_, ends_;
   // The windows dropped by the edge-end rule in this solve (full tier).
   struct DroppedWindow {
     Index edge;
