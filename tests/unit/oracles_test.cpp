@@ -54,6 +54,16 @@ TEST(Oracles, SurfacePointPosition) {
   EXPECT_THROW(surfacePointPosition(soup, SurfacePoint::atVertex(9)), std::invalid_argument);
 }
 
+// An edge point's parameter runs from one end (0) to the other (1): beyond either end it is no
+// point of the edge, and the oracles refuse it rather than extrapolate along the edge's line.
+TEST(Oracles, SurfacePointPositionRefusesAnEdgeParameterBeyondEitherEnd) {
+  const TriangleSoup soup = gridMesh(2, 2, 2.0, 2.0);
+  EXPECT_NO_THROW(surfacePointPosition(soup, SurfacePoint::onEdge(0, 1, 1.0)));
+  for (const double t : {-0.5, 1.5, std::nextafter(1.0, 2.0)})
+    EXPECT_THROW(surfacePointPosition(soup, SurfacePoint::onEdge(0, 1, t)), std::invalid_argument)
+        << t;
+}
+
 // === Edge-graph Dijkstra =======================================================================
 
 TEST(Oracles, EdgeGraphDijkstraOnAGridHasTheKnownValues) {
@@ -368,6 +378,27 @@ TEST(BoundChecks, SymmetryAndAgreementFail) {
   EXPECT_TRUE(checkAgreement(d, f.euclid, 1e-6).ok());
   d[3] = kInf;
   EXPECT_FALSE(checkAgreement(d, f.euclid, 1e-3).ok());
+}
+
+// A NaN or −∞ is no distance, even where the reference has none either (an unreachable vertex):
+// it fails as such, not as a reachability mismatch or a match of two infinities.
+TEST(BoundChecks, AgreementFailsOnWhatIsNoDistanceWhereverItIs) {
+  const std::vector<double> reference{kInf, kInf, 1.0, kInf};
+  const std::vector<double> d{std::nan(""), -kInf, std::nan(""), kInf};
+  const CheckReport r = checkAgreement(d, reference, 1e-9);
+  EXPECT_EQ(r.failed, 3u) << r.summary();
+  EXPECT_NE(r.firstFailure.find("not a distance"), std::string::npos) << r.firstFailure;
+  EXPECT_EQ(checkAgreement(reference, d, 1e-9).failed, 3u);  // the other way round
+}
+
+// The tolerance a bound allows is allowed: a value exactly that far from its reference passes,
+// and one an ulp beyond it fails.
+TEST(BoundChecks, AValueExactlyAtTheAllowedDistanceFromItsBoundPasses) {
+  const std::vector<double> reference{1.0};
+  EXPECT_TRUE(checkAgreement(std::vector<double>{1.5}, reference, 0.0, 0.5).ok());
+  EXPECT_FALSE(
+      checkAgreement(std::vector<double>{std::nextafter(1.5, 2.0)}, reference, 0.0, 0.5).ok());
+  EXPECT_TRUE(checkUpperBound(std::vector<double>{1.5}, reference, 0.0, 0.5).ok());
 }
 
 // === CGAL differential oracle ==================================================================
