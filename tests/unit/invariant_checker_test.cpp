@@ -225,6 +225,28 @@ TEST(InvariantChecker,
   EXPECT_EQ(violatedBy(u), "pointwise-min");
 }
 
+// A window rewritten with its source a little higher than the old one, close above the edge at
+// the window's start: the two distances differ there by three times the pointwise-min tolerance
+// and a spacing away by a hundredth of it. The start is a uniform sample; the check looks there,
+// also in an update that removed a D1 sliver elsewhere (where every piece is sampled only at the
+// uniform points, its midpoint and where a function dips furthest).
+TEST(InvariantChecker, AWindowOffOnlyAtItsStartFailsThoughASliverWasRemovedElsewhere) {
+  const double q = kL / 2, h = 1e-3;  // q = 16 uniform spacings
+  const double off = 3.0 * tol::kPointwiseMinRel * (h + kL);
+  for (const bool sliverRemoved : {false, true}) {
+    Update u;
+    u.before = {make(0, q, Vec2(q / 2, 1)), make(q, kL, Vec2(q, h))};
+    u.incoming = make(0, 1, Vec2(0.5, 1), 10.0);  // far from q, and longer: nothing changes
+    u.after = {u.before[0], make(q, kL, Vec2(q, h + off))};
+    u.report.first = 0, u.report.last = 2;
+    const double spacing = kL / 32;
+    EXPECT_LT(u.after[1].distanceAt(q + spacing) - u.before[1].distanceAt(q + spacing),
+              0.01 * tol::kPointwiseMinRel * kL);
+    if (sliverRemoved) u.report.removedTiny = {{0.5, 0.5 + 0.1 * tol::kTinyIntervalRel * kL}};
+    EXPECT_EQ(violatedBy(u), "pointwise-min") << (sliverRemoved ? "a sliver removed" : "none");
+  }
+}
+
 // The incoming window is shorter than the list only over one old interval, narrower than the
 // spacing of the uniform samples and between two of them, and the update keeps the list as it was
 // (reporting, as the solver does, the intervals the incoming range reaches as rewritten): the
