@@ -174,6 +174,9 @@ inline std::size_t guessIndex(std::size_t n, double x, double edgeLength) {
   return f >= static_cast<double>(n) ? n - 1 : static_cast<std::size_t>(f);
 }
 
+/// A list of one edge's intervals, allocated from a solver's pool.
+using IntervalList = std::vector<Interval, IntervalAllocator<Interval>>;
+
 /// The sorted, non-overlapping intervals of one edge.
 class EdgeIntervals {
  public:
@@ -203,7 +206,7 @@ class EdgeIntervals {
   std::size_t closeShadows(double widest, double passed);
 
  private:
-  std::vector<Interval, IntervalAllocator<Interval>> list_;
+  IntervalList list_;
 };
 
 /// Eq. 1: positions x in (lo, hi) where the two intervals' distance functions are equal, as
