@@ -7,12 +7,15 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <string>
 #include <vector>
 
 #include "geodex/error.h"
 #include "geodex/geodesic_solver.h"
+#include "geodex/tolerance.h"
 #include "geodex/verify/mesh_generators.h"
 
 namespace geodex {
@@ -158,4 +161,47 @@ TEST(MeshUnits, ADistanceBeyondTheLargestDoubleIsAnErrorNotInfinity) {
 }
 
 }  // namespace
+// A vertex inside a plane has an angle sum of 2π; computed from a tilted, irregular triangulation
+// it carries rounding of a few ulps of 2π, either way. A flat vertex is no pseudo-source
+// (tol::kFlatVertexAngle): one made a saddle by its rounding would emit windows for nothing (the
+// reference code's factor of ~15 on CAD faces). The plane here is tilted and its interior points
+// jittered so that the rounding is there to be tolerated: the test says how large it got
+// (two ulps of 2π above it).
+TEST(FlatVertices, NoVertexInsideATiltedPlaneIsAPseudoSourceWhateverItsAngleSumsRounding) {
+  const int n = 24;
+  TriangleSoup soup;
+  const Vec3 u = Vec3(1.0, 0.3, -0.7).normalized();
+  const Vec3 v = u.cross(Vec3(0.2, 1.0, 0.4)).normalized();
+  for (int j = 0; j <= n; ++j) {
+    for (int i = 0; i <= n; ++i) {
+      const bool inside = i > 0 && i < n && j > 0 && j < n;
+      // A fixed jitter, a third of the spacing at most, from the indices.
+      const double jx = inside ? 0.33 * std::sin(12.9898 * i + 78.233 * j) : 0.0;
+      const double jy = inside ? 0.33 * std::sin(39.3468 * i + 11.135 * j) : 0.0;
+      soup.positions.push_back(0.7 * ((i + jx) * u + (j + jy) * v));
+    }
+  }
+  const auto at = [&](int i, int j) { return static_cast<Index>(j * (n + 1) + i); };
+  for (int j = 0; j < n; ++j) {
+    for (int i = 0; i < n; ++i) {
+      soup.faces.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      soup.faces.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  }
+  const Mesh mesh(soup);
+  double largestExcess = 0.0;  // of an angle sum over 2π
+  for (int j = 1; j < n; ++j) {
+    for (int i = 1; i < n; ++i) {
+      const Index w = at(i, j);
+      largestExcess = std::max(largestExcess, mesh.angleSum(w) - 2.0 * std::numbers::pi);
+      EXPECT_FALSE(mesh.isPseudoSourceVertex(w))
+          << "vertex " << w << ": angle sum 2π + " << mesh.angleSum(w) - 2.0 * std::numbers::pi;
+    }
+  }
+  // Some angle sum came out at least two ulps of 2π (8.9e-16 each) above it.
+  const double ulp = std::nextafter(2.0 * std::numbers::pi, 4.0) - 2.0 * std::numbers::pi;
+  EXPECT_GE(largestExcess, 2.0 * ulp);
+  EXPECT_LT(largestExcess, 1e-2 * tol::kFlatVertexAngle);
+}
+
 }  // namespace geodex
