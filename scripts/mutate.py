@@ -31,6 +31,10 @@ mutant already there with the same source line is not run again), the report to
 docs/mutation.md (every mutant, its verdict and the test that killed it). A survivor argued
 equivalent (no input can tell it from the original) is listed in scripts/mutation-equivalents.json
 by its hash with the evidence; the report shows it as equivalent and leaves it out of the score.
+A survivor that was a better program than the original (it changed an output for the better, no
+test could ask for the original's worse one, and the code was changed to do what it does) is
+listed in scripts/mutation-adopted.json with the commit that adopted it; the report shows it as
+adopted and leaves it out of the score too.
 """
 
 import argparse
@@ -345,14 +349,15 @@ def mutate_one(work, m, presets, log):
 
 
 def load_equivalents(path):
-    """Mutant hash -> the evidence that it cannot change any output (scripts/mutation-equivalents.json)."""
+    """Mutant hash -> the evidence that it cannot change any output (scripts/mutation-equivalents.json),
+    or, read from scripts/mutation-adopted.json, the commit that adopted it and why."""
     if not os.path.exists(path):
         return {}
     with open(path) as f:
         return json.load(f)
 
 
-def report(mutants, results, path, seed, equivalents, commit):
+def report(mutants, results, path, seed, equivalents, adopted, commit):
     rows = []
     counts = {}
     for m in mutants:
@@ -362,6 +367,10 @@ def report(mutants, results, path, seed, equivalents, commit):
         if verdict == "survived" and evidence:
             verdict = "equivalent"
             r = dict(r, by=evidence)
+        adoption = adopted.get(m["id"].rsplit(":", 1)[1])
+        if verdict == "survived" and adoption:
+            verdict = "adopted"
+            r = dict(r, by=adoption)
         counts[verdict] = counts.get(verdict, 0) + 1
         change = "`%s` → `%s`" % (code_part(m["before"]).strip()[:70], code_part(m["after"]).strip()[:70])
         by = (r or {}).get("by", "")
@@ -379,10 +388,12 @@ def report(mutants, results, path, seed, equivalents, commit):
                 "CI's seed, then the rest of the release ctest with the corpus replay), and when those miss it, with the "
                 "debug preset (checks on).\n\n" % (seed, commit[:7], commit[:7]))
         f.write("Killed %d of %d scored mutants (%.1f %%); %d argued equivalent "
-                "(scripts/mutation-equivalents.json: the evidence is in the last column); %d did not "
-                "compile; %d not run yet.\n\n" % (
+                "(scripts/mutation-equivalents.json: the evidence is in the last column); %d adopted (a better "
+                "program than the original, which was changed to do what it does: "
+                "scripts/mutation-adopted.json); %d did not compile; %d not run yet.\n\n" % (
                     counts.get("killed", 0), scored, 100.0 * counts.get("killed", 0) / scored if scored else 0.0,
-                    counts.get("equivalent", 0), counts.get("did not compile", 0), counts.get("not run", 0)))
+                    counts.get("equivalent", 0), counts.get("adopted", 0), counts.get("did not compile", 0),
+                    counts.get("not run", 0)))
         f.write("| id | where | operator | change | verdict | killed by |\n|---|---|---|---|---|---|\n")
         f.write("\n".join(rows) + "\n")
 
@@ -474,9 +485,10 @@ def main():
                 f.write(json.dumps(r) + "\n")
             sys.stderr.write("%s %s (%.0f s)\n" % (r["verdict"], r["by"], r["seconds"]))
     equivalents = load_equivalents(os.path.join(ROOT, "scripts", "mutation-equivalents.json"))
-    report(catalogue(a.seed, head), results, a.report, a.seed, equivalents, head)
+    adopted = load_equivalents(os.path.join(ROOT, "scripts", "mutation-adopted.json"))
+    report(catalogue(a.seed, head), results, a.report, a.seed, equivalents, adopted, head)
     survived = [m["id"] for m in catalogue(a.seed, head) if results.get(m["id"], {}).get("verdict") == "survived"
-                and m["id"].rsplit(":", 1)[1] not in equivalents]
+                and m["id"].rsplit(":", 1)[1] not in equivalents and m["id"].rsplit(":", 1)[1] not in adopted]
     print("report: %s; survivors: %s" % (a.report, ", ".join(survived) or "none"))
     return 0
 
