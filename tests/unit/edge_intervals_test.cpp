@@ -668,6 +668,28 @@ TEST(Algorithm2, D4InaccurateRootIsPolished) {
   EXPECT_GE(e.total[DegeneracyKind::D4], 1u) << "this configuration was chosen to need D4";
 }
 
+// The other side of D4: a root of the quadratic whose two distances agree to the Eq. 1 tolerance is
+// the breakpoint as it is, though its coefficients cancelled. A source 6e4 away against a nearby
+// one with σ 6e4 (found by random search): the two distances at the root differ by 2.3e-12 of the
+// distance, thirty times below tol::kEq1RootRel, and no bisection (no D4) is needed.
+TEST(Algorithm2, AnEq1RootAccurateToItsToleranceIsTakenWithoutD4) {
+  Edge1 e;
+  const Interval far = make(0.0, kL, Vec2(36615.503461284738, 47632.261584772757), 0.0);
+  const Interval nearby =
+      make(0.0, kL, Vec2(3.9744545441573393, 0.15526435831373697), 60072.05865329571);
+  e.insert(far);
+  e.insert(nearby);
+  expectWellFormed(e.list);
+  ASSERT_EQ(e.report.eq1Breakpoints.size(), 1u);
+  const double x = e.report.eq1Breakpoints[0];
+  const double scale = far.distanceAt(x) + kL;
+  const double disagreement = std::abs(far.distanceAt(x) - nearby.distanceAt(x));
+  EXPECT_GT(disagreement, 1e-12 * scale) << "the root is no better than the cancellation allows";
+  EXPECT_LE(disagreement, tol::kEq1RootRel * scale);
+  EXPECT_EQ(e.total[DegeneracyKind::D4], 0u);
+  expectPointwiseMin(e.list, {far, nearby}, 0.0, kL);
+}
+
 // D4 counts a split of a piece that Eq. 1 could not place, polished by bisection, inside the piece.
 // One within ε of the piece's end is the two functions meeting there (e.g. both through the same
 // vertex), which Eq. 1 need not resolve: what the other keeps beyond it is a sliver, step 3's D1.
