@@ -638,21 +638,36 @@ void removeTinyIntervals(Slice& s, double sliverBound, EdgeUpdateReport& report)
 // end across the whole gap instead, so the propagated side need not be propagated again (either
 // way each point of the gap takes a neighbour's value, which is all step 4 promises). The edge's
 // ends count as neighbours. Returns whether it sewed anything.
+//
+// Its three tests, which updateOneReached asks too: a gap before `front` at the edge's start, after
+// `back` at its end, between neighbours p and q. (A flat vertex's shadow, kFlatVertexAngle × the
+// rays' length, is below sewLength; wider shadows are closed when the wavefront has passed:
+// tol::kShadowSewRel.)
+bool sewsAtStart(const Interval& front, double edgeLength) {
+  return front.b0 > 0.0 && front.b0 < sewLength(front, edgeLength);
+}
+bool sewsAtEnd(const Interval& back, double edgeLength) {
+  return back.b1 < edgeLength && edgeLength - back.b1 < sewLength(back, edgeLength);
+}
+bool sewsBetween(const Interval& p, const Interval& q, double edgeLength) {
+  const double gap = q.b0 - p.b1;
+  return gap > 0.0 && gap < std::max(sewLength(p, edgeLength), sewLength(q, edgeLength));
+}
+
 bool sewSmallGaps(Slice& s, EdgeUpdateReport& report) {
   if (s.m == 0) return false;
   Interval* const L = s.L;
   const double edgeLength = s.edgeLength;
   bool sewn = false;
   Interval& front = L[0];
-  if (s.outerPrev == nullptr && front.b0 > 0.0 && front.b0 < sewLength(front, edgeLength)) {
+  if (s.outerPrev == nullptr && sewsAtStart(front, edgeLength)) {
     ++report.degeneracies[DegeneracyKind::D3];
     if (!front.pending()) grewUnpropagated(front);
     setRange(front, 0.0, front.b1);
     sewn = true;
   }
   Interval& back = L[s.m - 1];
-  if (s.outerNext == nullptr && back.b1 < edgeLength &&
-      edgeLength - back.b1 < sewLength(back, edgeLength)) {
+  if (s.outerNext == nullptr && sewsAtEnd(back, edgeLength)) {
     ++report.degeneracies[DegeneracyKind::D3];
     if (!back.pending()) grewUnpropagated(back);
     setRange(back, back.b0, edgeLength);
@@ -670,10 +685,7 @@ bool sewSmallGaps(Slice& s, EdgeUpdateReport& report) {
     // f1918372, docs/mutation.md.)
     GEODEX_CHECK(gap > 0.0, "step 4 met neighbours overlapping by " << -gap << " on [" << q.b0
                                                                     << ", " << p.b1 << "]");
-    // (A flat vertex's shadow, kFlatVertexAngle × the rays' length, is below sewLength;
-    // wider shadows are closed when the wavefront has passed: tol::kShadowSewRel.)
-    if (!(gap > 0.0) || gap >= std::max(sewLength(p, edgeLength), sewLength(q, edgeLength)))
-      continue;
+    if (!sewsBetween(p, q, edgeLength)) continue;
     ++report.degeneracies[DegeneracyKind::D3];
     sewn = true;
     if (p.pending() && !q.pending()) {
@@ -696,13 +708,18 @@ bool sewSmallGaps(Slice& s, EdgeUpdateReport& report) {
 // propagate it a second time. The merged interval keeps the first one's function. Returns whether
 // a merged pair differed in source or σ (within kSameSourceRel): only then can steps 3 and 4 find
 // something new.
+//
+// Whether step 5 joins q to p (also asked by updateOneReached).
+bool joins(const Interval& p, const Interval& q, double edgeLength) {
+  return p.b1 == q.b0 && p.pending() == q.pending() && sameSource(p, q, edgeLength);
+}
+
 bool mergeSameSources(Slice& s) {
   Interval* const L = s.L;
   bool functionGrew = false;
   std::size_t w = 0;
   for (std::size_t r = 0; r < s.m; ++r) {
-    if (w > 0 && L[w - 1].b1 == L[r].b0 && L[w - 1].pending() == L[r].pending() &&
-        sameSource(L[w - 1], L[r], s.edgeLength)) {
+    if (w > 0 && joins(L[w - 1], L[r], s.edgeLength)) {
       setRange(L[w - 1], L[w - 1].b0, L[r].b1);
       L[w - 1].flags |= static_cast<std::uint8_t>(L[r].flags & kFromIncoming);
       if (L[w - 1].source != L[r].source || L[w - 1].sigma != L[r].sigma) functionGrew = true;
@@ -981,22 +998,18 @@ bool updateOneReached(IntervalList& list, std::size_t j, const Interval& incomin
   // nothing lies beyond it) and beside the pieces. (Between them there is none.)
   const Interval& front = prev != nullptr ? *prev : first;
   const Interval& back = next != nullptr ? *next : last;
-  if (j <= 1 && front.b0 > 0.0 && front.b0 < sewLength(front, edgeLength)) return false;
-  if (j + 2 >= n && back.b1 < edgeLength && edgeLength - back.b1 < sewLength(back, edgeLength))
+  if ((j <= 1 && sewsAtStart(front, edgeLength)) || (j + 2 >= n && sewsAtEnd(back, edgeLength)))
     return false;
+  // (An overlap, which step 4 would report, declines too.)
   const auto sews = [&](const Interval& p, const Interval& q) {
-    const double gap = q.b0 - p.b1;
-    return gap != 0.0 &&
-           !(gap > 0.0 && gap >= std::max(sewLength(p, edgeLength), sewLength(q, edgeLength)));
+    return q.b0 < p.b1 || sewsBetween(p, q, edgeLength);
   };
   if ((prev != nullptr && sews(*prev, first)) || (next != nullptr && sews(last, *next)))
     return false;
 
   // Step 5 across the pieces' ends.
-  const auto joins = [&](const Interval& p, const Interval& q) {
-    return p.b1 == q.b0 && p.pending() == q.pending() && sameSource(p, q, edgeLength);
-  };
-  if ((prev != nullptr && joins(*prev, first)) || (next != nullptr && joins(last, *next)))
+  if ((prev != nullptr && joins(*prev, first, edgeLength)) ||
+      (next != nullptr && joins(last, *next, edgeLength)))
     return false;
 
   report.incomingSurvived = pieces.anyNew();
