@@ -1000,9 +1000,9 @@ bool updateOneReached(IntervalList& list, std::size_t j, const Interval& incomin
   const Interval& back = next != nullptr ? *next : last;
   if ((j <= 1 && sewsAtStart(front, edgeLength)) || (j + 2 >= n && sewsAtEnd(back, edgeLength)))
     return false;
-  // (An overlap, which step 4 would report, declines too.)
+  // (An overlap, which step 4 would report, declines too. Most neighbours touch.)
   const auto sews = [&](const Interval& p, const Interval& q) {
-    return q.b0 < p.b1 || sewsBetween(p, q, edgeLength);
+    return q.b0 != p.b1 && (q.b0 < p.b1 || sewsBetween(p, q, edgeLength));
   };
   if ((prev != nullptr && sews(*prev, first)) || (next != nullptr && sews(last, *next)))
     return false;
