@@ -791,33 +791,6 @@ bool keepsTheOuterEnd(const Interval& now, const Interval& was, bool front) {
          now.pending() == was.pending();
 }
 
-// Replaces the intervals [s0, s1) of `list` by `rewritten`, moving the list's tail once.
-void spliceSlice(IntervalList& list, std::size_t s0, std::size_t s1,
-                 std::span<const Interval> rewritten) {
-  const std::size_t oldCount = s1 - s0, newCount = rewritten.size();
-  const auto at = [&](std::size_t i) { return list.begin() + static_cast<std::ptrdiff_t>(i); };
-  if (newCount > oldCount && list.size() + (newCount - oldCount) > list.capacity()) {
-    // To the next size class, a quarter up, not the default doubling: the lists are most of the
-    // solver's memory. Built in the new block directly: reserve, resize and a shift would copy
-    // the tail three times (a list grows this way at six in ten of fandisk's updates).
-    IntervalList grown(list.get_allocator());
-    grown.reserve(IntervalPool::capacityFor(list.size() + (newCount - oldCount)));
-    grown.insert(grown.end(), list.begin(), at(s0));
-    grown.insert(grown.end(), rewritten.begin(), rewritten.end());
-    grown.insert(grown.end(), at(s1), list.end());
-    list.swap(grown);
-    return;
-  }
-  const std::size_t common = std::min(oldCount, newCount);
-  const auto rest = rewritten.begin() + static_cast<std::ptrdiff_t>(common);
-  std::copy(rewritten.begin(), rest, at(s0));
-  if (newCount > oldCount) {
-    list.insert(at(s1), rest, rewritten.end());
-  } else {
-    list.erase(at(s0 + newCount), at(s1));
-  }
-}
-
 // The general update: steps 1–5 over the slice of the old intervals [j0, j1) the incoming range
 // reaches and one neighbour on each side, widened while steps 3–5 change an outer one, spliced
 // back.
@@ -853,7 +826,7 @@ void updateSlice(IntervalList& edgeList, std::size_t j0, std::size_t j1, const I
     report.clear();
   }
 
-  spliceSlice(edgeList, s0, s1, std::span<const Interval>(s.L, s.m));
+  edgeList.replace(s0, s1, std::span<const Interval>(s.L, s.m));
   report.first = s0;
   report.last = s0 + s.m;
 }
@@ -1015,7 +988,7 @@ bool updateOneReached(IntervalList& list, std::size_t j, const Interval& incomin
   report.incomingSurvived = pieces.anyNew();
   report.first = prev != nullptr ? j - 1 : j;
   report.last = j + pieces.size() + (next != nullptr ? 1 : 0);
-  spliceSlice(list, j, j + 1, std::span<const Interval>(pieces.data(), pieces.size()));
+  list.replace(j, j + 1, std::span<const Interval>(pieces.data(), pieces.size()));
   return true;
 }
 
@@ -1064,7 +1037,7 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
   }
   if (j1 - j0 == 1) {
 #if defined(GEODEX_ENABLE_CHECKS)
-    IntervalList before(list_.begin(), list_.end());
+    IntervalList before(list_);
 #endif
     if (updateOneReached(list_, j0, incoming, scan, edgeLength, report)) {
 #if defined(GEODEX_ENABLE_CHECKS)

@@ -6,7 +6,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstddef>
+#include <random>
+#include <span>
+#include <utility>
+#include <vector>
 
 namespace geodex {
 namespace {
@@ -56,6 +61,85 @@ TEST(IntervalPool, ARecycledPoolCarvesFromTheStartOfItsFirstChunkAgain) {
   for (int i = 0; i < 100; ++i) pool.allocate(8);
   pool.recycle();
   EXPECT_EQ(pool.allocate(4), first);
+}
+
+// ---  IntervalList --------------------------------------------------------------------------
+
+// Intervals told apart by their range alone, enough to see which one went where.
+Interval numbered(int k) {
+  Interval w;
+  w.b0 = k;
+  w.b1 = k + 1;
+  w.origin = k;
+  return w;
+}
+
+bool sameList(std::span<const Interval> list, const std::vector<Interval>& expected) {
+  if (list.size() != expected.size()) return false;
+  for (std::size_t i = 0; i < list.size(); ++i)
+    if (list[i].b0 != expected[i].b0 || list[i].origin != expected[i].origin) return false;
+  return true;
+}
+
+// The splice every edge update ends with: whatever the slice and whatever replaces it (fewer,
+// as many, more; at the front, inside, at the back; growing past the block or not), the list is
+// the old one with the slice cut out and the new intervals put in its place, in order, in a
+// block of the smallest size class that held the list at its longest.
+TEST(IntervalList, AReplacedSliceLeavesTheRestOfTheListInOrderAroundTheNewIntervals) {
+  IntervalPool pool;
+  std::mt19937 random(7);
+  int next = 0;
+  for (IntervalPool* const p : {&pool, static_cast<IntervalPool*>(nullptr)}) {
+    for (int trial = 0; trial < 3000; ++trial) {
+      IntervalList list(p);
+      std::vector<Interval> expected;
+      std::size_t largest = 0;
+      const int steps = 1 + static_cast<int>(random() % 20);
+      for (int step = 0; step < steps; ++step) {
+        const std::size_t n = expected.size();
+        const std::size_t s0 = random() % (n + 1);
+        const std::size_t s1 = s0 + random() % (n - s0 + 1);
+        std::vector<Interval> with(random() % 5);
+        for (Interval& w : with) w = numbered(next++);
+        list.replace(s0, s1, with);
+        expected.erase(expected.begin() + static_cast<std::ptrdiff_t>(s0),
+                       expected.begin() + static_cast<std::ptrdiff_t>(s1));
+        expected.insert(expected.begin() + static_cast<std::ptrdiff_t>(s0), with.begin(),
+                        with.end());
+        ASSERT_TRUE(sameList(list, expected)) << "trial " << trial << " step " << step;
+        // A size class a quarter up from the longest the list has been, never more.
+        largest = std::max(largest, list.size());
+        ASSERT_GE(list.capacity(), list.size());
+        ASSERT_LE(list.capacity(), IntervalPool::capacityFor(largest));
+      }
+    }
+  }
+}
+
+// Copies are lists of their own (the checked builds copy a list to run the general update
+// beside the fast one); a moved-from list is empty and usable.
+TEST(IntervalList, ACopyIsIndependentAndAMovedFromListIsEmpty) {
+  IntervalPool pool;
+  IntervalList a(&pool);
+  const std::vector<Interval> three{numbered(0), numbered(1), numbered(2)};
+  a.assign(three);
+  IntervalList b(a);
+  b.replace(1, 2, std::vector<Interval>{numbered(9), numbered(10)});
+  EXPECT_TRUE(sameList(a, three));
+  EXPECT_TRUE(sameList(b, {numbered(0), numbered(9), numbered(10), numbered(2)}));
+
+  IntervalList c(std::move(b));
+  EXPECT_TRUE(b.empty());  // NOLINT(bugprone-use-after-move): what a move leaves is the point
+  EXPECT_EQ(c.size(), 4u);
+  b.replace(0, 0, three);
+  EXPECT_TRUE(sameList(b, three));
+
+  c = a;
+  EXPECT_TRUE(sameList(c, three));
+  a = std::move(c);
+  EXPECT_TRUE(sameList(a, three));
+  a.clear();
+  EXPECT_TRUE(a.empty());
 }
 
 }  // namespace

@@ -174,21 +174,18 @@ inline std::size_t guessIndex(std::size_t n, double x, double edgeLength) {
   return f >= static_cast<double>(n) ? n - 1 : static_cast<std::size_t>(f);
 }
 
-/// A list of one edge's intervals, allocated from a solver's pool.
-using IntervalList = std::vector<Interval, IntervalAllocator<Interval>>;
-
 /// The sorted, non-overlapping intervals of one edge.
 class EdgeIntervals {
  public:
   /// A list allocating from `pool` (a solver's), or with operator new when null.
-  explicit EdgeIntervals(IntervalPool* pool = nullptr) : list_(IntervalAllocator<Interval>(pool)) {}
+  explicit EdgeIntervals(IntervalPool* pool = nullptr) : list_(pool) {}
 
   std::span<const Interval> intervals() const { return list_; }
   std::span<Interval> intervals() { return list_; }
   bool empty() const { return list_.empty(); }
   void clear() { list_.clear(); }
   /// For tests and the fuzzers: install a list as it is (no checks; verify/ judges it).
-  void assign(const std::vector<Interval>& list) { list_.assign(list.begin(), list.end()); }
+  void assign(const std::vector<Interval>& list) { list_.assign(list); }
 
   /// Algorithm 2: merge `incoming` (range within [0, edgeLength]) into the list. Only the part
   /// of the list the incoming range reaches (plus two neighbours on each side, which steps 3–5 may
