@@ -459,6 +459,12 @@ TEST(SolverRegression, AFaceSourceAHairFromACornerLeavesNoEdgeEndToAFarWindow) {
 // saddle's sliver and a farther window, wider than the end of a solve closes. This is the mesh
 // cut to the faces nearer than 0.97 (the edge is at 0.84-0.89) and reduced, face by face, while
 // the full tier still found an edge not fully covered: 80 of its 3,714 faces.
+// Where it comes from (traced with an observer): saddle 45 lies on a geodesic from pseudo-source
+// 49 (σ45 = σ49 + |s49 s45| to 2.3e-14). On edge 10-26 the two tie within kTieRel for 2.6e-8 of
+// the edge, and the tie rule gives that strip to 49, the smaller σ. Downstream the strip runs
+// between windows of 45 on both sides (edge 12-28 and on), and the two sources' rays at its
+// borders miss each other by 6e-9 (edges 13-15, 13-14), wider than step 4 sews; the gaps widen
+// along the rays until, on edge 19-22, 7.1e-8 is left between the strip and 45's window.
 TEST(SolverRegression, AnEdgeSourceOnAPartOfCouplingdownLeavesNoGap) {
   const Mesh mesh = loadMesh(std::string(GEODEX_SOURCE_DIR) + "/tests/data/regression/" +
                              "couplingdown-part-edge-source-leaves-a-gap.off");
