@@ -407,8 +407,9 @@ int equalDistanceCandidates(const Interval& a, const Interval& b, double lo, dou
     }
   }
   int kept = 0;
+  const double unit = 1.0 / k;  // exact (a power of two): one division where there were two
   for (int i = 0; i < n; ++i) {
-    const double x = r[i] / k + m;
+    const double x = r[i] * unit + m;
     if (std::isfinite(x) && x > lo && x < hi) roots[kept++] = x;
   }
   if (kept == 2 && roots[0] > roots[1]) std::swap(roots[0], roots[1]);
