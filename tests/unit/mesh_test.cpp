@@ -204,4 +204,25 @@ TEST(FlatVertices, NoVertexInsideATiltedPlaneIsAPseudoSourceWhateverItsAngleSums
   EXPECT_LT(largestExcess, 1e-2 * tol::kFlatVertexAngle);
 }
 
+// The other side of tol::kFlatVertexAngle: a vertex whose angle sum exceeds 2π by 1e-10, five
+// orders above the rounding of a flat vertex's angle sum (the test above), is a saddle, and a
+// saddle is a pseudo-source: shortest paths bend around it, and the wedge behind it that the
+// windows passing either side leave open (1e-10 × their length wide) is its windows' to fill.
+// The fan here is a regular hexagon whose rim goes up and down by h in turn: each corner angle is
+// π/3 + √3 h² to first order, so the excess is 6√3 h².
+TEST(Saddles, AVertexWhoseAngleSumExceeds2PiByATenthOfANanoradianIsAPseudoSource) {
+  const double h = std::sqrt(1e-10 / (6.0 * std::sqrt(3.0)));
+  TriangleSoup soup;
+  soup.positions.push_back(Vec3(0, 0, 0));
+  for (int k = 0; k < 6; ++k) {
+    const double a = k * std::numbers::pi / 3.0;
+    soup.positions.push_back(Vec3(std::cos(a), std::sin(a), k % 2 == 0 ? h : -h));
+  }
+  for (Index k = 0; k < 6; ++k) soup.faces.push_back({0, 1 + k, 1 + (k + 1) % 6});
+  const Mesh mesh(soup);
+  const double excess = mesh.angleSum(0) - 2.0 * std::numbers::pi;
+  EXPECT_NEAR(excess, 1e-10, 1e-12);
+  EXPECT_TRUE(mesh.isPseudoSourceVertex(0)) << "angle sum 2π + " << excess;
+}
+
 }  // namespace geodex
