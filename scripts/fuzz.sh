@@ -29,8 +29,14 @@ if [[ ${#targets[@]} -eq 0 ]]; then
   targets=(fuzz_mesh_io fuzz_predicates fuzz_edge_update fuzz_propagation fuzz_two_faces fuzz_solver)
 fi
 
+# Campaigns started side by side share build/fuzz: one configures and builds at a time (two
+# ninjas in one build directory broke its CMake regeneration).
+mkdir -p build
+exec 9>build/fuzz.lock
+flock 9
 cmake --preset fuzz >/dev/null
 cmake --build --preset fuzz --target "${targets[@]}"
+flock -u 9
 
 status=0
 summary=()
