@@ -15,7 +15,6 @@
 #include <memory>
 #include <new>
 #include <span>
-#include <type_traits>
 #include <vector>
 
 #include "geodex/interval.h"
@@ -64,9 +63,9 @@ class IntervalPool {
 
 /// One edge's intervals in a block of `pool` (or of operator new without one): a vector cut to
 /// what Algorithm 2 asks of it. std::vector with a pool allocator built, moved and copied its
-/// elements one at a time through the allocator (libstdc++ uses memmove for std::allocator only):
-/// 9 % of bunny00's instructions went to splicing updates into lists. Interval is trivially
-/// copyable, so whole runs of intervals are copied at once here.
+/// elements one at a time through the allocator (libstdc++ copies as bytes only with
+/// std::allocator), in the splice that ends every update; Interval is trivially copyable, so runs
+/// of intervals are copied at once here.
 class IntervalList {
  public:
   explicit IntervalList(IntervalPool* pool = nullptr) : pool_(pool) {}
