@@ -428,6 +428,24 @@ TEST(SolverRegression, AnEdgeSourceAHairFromTheApexOfItsFaceFansOutThroughThatAp
   }
 }
 
+// Known bug (fuzz_solver, 2026-11-27; GEODEX_KNOWN_BUGS): the case above with the zero-area strip
+// triangulated the other way. The source's edge 6-7 has only the zero-area face 2-7-6, whose apex
+// lies beyond the edge, and vertex 3, 3.2e-11 from the source, is the apex of the next zero-area
+// face (2-3-7), not of the edge's own: the fix above does not make it a pseudo-source. Vertex 5
+// gets 2.7361 (via vertex 7) where the straight line is 2.6926, and `geodex distance` exits 0.
+TEST(SolverRegression, AnEdgeSourceAHairFromAVertexOnAZeroAreaFaceBesideItsOwnFansOutThroughIt) {
+  const std::string file =
+      "edge-source-a-hair-from-a-vertex-on-a-zero-area-face-beside-its-own.off";
+  const Mesh mesh = loadMesh(std::string(GEODEX_SOURCE_DIR) + "/tests/data/regression/" + file);
+  GeodesicSolver solver(mesh);
+  EXPECT_EQ(solveAndCheck(parseSurfacePoint("e:7,6,0.50000000003199996"), solver), "");
+  const Eigen::Vector2d source(4.0 - 0.50000000003199996, 2.5);
+  for (Index v = 0; v < mesh.numVertices(); ++v) {
+    const Eigen::Vector2d at = mesh.position(v).head<2>();
+    EXPECT_NEAR(solver.vertexDistances()[v], (at - source).norm(), 1e-10) << "vertex " << v;
+  }
+}
+
 // OPEN (GEODEX_KNOWN_BUGS). Found by fuzz_solver on 2026-11-26 (corpus/fuzz_solver/regress/open-
 // full-coverage-face-source-1e-8-from-a-corner-leaves-a-gap-of-2.6e-9). A face source 1.8e-8 from
 // vertex 2: on edge 11-16 the windows of the source and of two saddles it reaches along nearly one
