@@ -1,6 +1,7 @@
 #include "geodex/geodesic_solver.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -168,6 +169,7 @@ void GeodesicSolver::seedSource(const ResolvedPoint& p, std::size_t number) {
         const FaceFrame& fr = mesh_.frame(f, p.element);
         seedCorner(fr.apex, (fr.apexPos - Vec2(p.t, 0.0)).norm());
       }
+      seedZeroAreaStrip(p.element, p.t);
       addInterval(p.element, own, nullptr);
       for (Index f : E.face)
         if (f != kNoIndex) seedFaceFromPoint(f, p, p.element, 0.0, origin);
@@ -183,6 +185,55 @@ void GeodesicSolver::seedSource(const ResolvedPoint& p, std::size_t number) {
       }
       seedFaceFromPoint(f, p, kNoIndex, 0.0, origin);
       return;
+    }
+  }
+}
+
+// The zero-area faces along edge e's line next to an edge source at t on it (across e, then across
+// their own edges, as long as each next face lies on the line too): their corners lie on the line,
+// the path to each along it is straight, so each is a corner of the source at that distance. A
+// vertex of such a face a hair from the source has no fan otherwise: the source's rays into the
+// faces beyond reach it only at grazing angles, and the patch beyond it was reached the long way
+// round (corpus/fuzz_solver/regress/vertex-agreement-edge-source-3e-11-from-a-vertex-on-a-zero-
+// area-face-beside-its-own; the apexes of e's own faces are corners already).
+void GeodesicSolver::seedZeroAreaStrip(Index e, double t) {
+  const Edge& E = mesh_.edge(e);
+  const Vec3 a = mesh_.positionInMeshUnits(E.vertex[0]);
+  const Vec3 dir = (mesh_.positionInMeshUnits(E.vertex[1]) - a) / E.length;
+  const Vec3 source = a + t * dir;
+  const auto onLine = [&](Index v) {
+    const Vec3 r = mesh_.positionInMeshUnits(v) - a;
+    return r.cross(dir).norm() <= tol::kVertexOnEdgeRel * std::max(E.length, r.norm());
+  };
+  std::array<Index, kMaxVertexOnEdgeDepth + 2> strip{};
+  std::size_t count = 0;
+  for (Index f : E.face)
+    if (f != kNoIndex && count < strip.size() && onLine(mesh_.frame(f, e).apex)) strip[count++] = f;
+  const auto ownCorner = [&](Index v) {  // seeded already, in the edge's frames
+    for (Index f : E.face) {
+      if (f == kNoIndex) continue;
+      const auto& c = mesh_.face(f);
+      if (std::find(c.begin(), c.end(), v) != c.end()) return true;
+    }
+    return false;
+  };
+  for (std::size_t i = 0; i < count; ++i) {
+    const Index f = strip[i];
+    for (Index v : mesh_.face(f))
+      if (!ownCorner(v)) seedCorner(v, (mesh_.positionInMeshUnits(v) - source).norm());
+    for (Index side : mesh_.faceEdges(f)) {
+      const Edge& S = mesh_.edge(side);
+      // Only across an edge the source's point lies on: a path into the next face that went
+      // along the line to a shorter edge first would turn back, longer than the straight line.
+      const double u0 = (mesh_.positionInMeshUnits(S.vertex[0]) - a).dot(dir);
+      const double u1 = (mesh_.positionInMeshUnits(S.vertex[1]) - a).dot(dir);
+      const double slack = tol::kVertexOnEdgeRel * std::max(E.length, std::abs(t));
+      if (t < std::min(u0, u1) - slack || t > std::max(u0, u1) + slack) continue;
+      const Index g = S.face[0] == f ? S.face[1] : S.face[0];
+      if (g == kNoIndex ||
+          std::find(strip.begin(), strip.begin() + count, g) != strip.begin() + count)
+        continue;
+      if (count < strip.size() && onLine(mesh_.frame(g, side).apex)) strip[count++] = g;
     }
   }
 }

@@ -428,11 +428,13 @@ TEST(SolverRegression, AnEdgeSourceAHairFromTheApexOfItsFaceFansOutThroughThatAp
   }
 }
 
-// Known bug (fuzz_solver, 2026-11-27; GEODEX_KNOWN_BUGS): the case above with the zero-area strip
+// Found by fuzz_solver on 2026-11-27 (corpus/fuzz_solver/regress/vertex-agreement-edge-source-3e-
+// 11-from-a-vertex-on-a-zero-area-face-beside-its-own): the case above with the zero-area strip
 // triangulated the other way. The source's edge 6-7 has only the zero-area face 2-7-6, whose apex
 // lies beyond the edge, and vertex 3, 3.2e-11 from the source, is the apex of the next zero-area
-// face (2-3-7), not of the edge's own: the fix above does not make it a pseudo-source. Vertex 5
-// gets 2.7361 (via vertex 7) where the straight line is 2.6926, and `geodex distance` exits 0.
+// face (2-3-7), not of the edge's own, so the fix above did not make it a pseudo-source: vertex 5
+// got 2.7361 (via vertex 7) where the straight line is 2.6926, and `geodex distance` exited 0.
+// The corners of the zero-area faces along the edge's line are now the source's corners too.
 TEST(SolverRegression, AnEdgeSourceAHairFromAVertexOnAZeroAreaFaceBesideItsOwnFansOutThroughIt) {
   const std::string file =
       "edge-source-a-hair-from-a-vertex-on-a-zero-area-face-beside-its-own.off";

@@ -122,6 +122,7 @@ class GeodesicSolver {
   void seedFaceFromPoint(Index f, const ResolvedPoint& p, Index skip, double sigma,
                          std::int32_t origin);
   void seedCorner(Index v, double d);
+  void seedZeroAreaStrip(Index e, double t);
   void seedAcrossVertexOnEdge(Index v, Index f, const FaceFrame& fr, double sigma,
                               std::int32_t origin, int depth, Index from);
   void seedAcrossPointOnEdge(Index v, Index e, Index f, double x, double at, std::int32_t origin,
