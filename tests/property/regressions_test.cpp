@@ -408,6 +408,20 @@ TEST(SolverRegression, ASliverRemovedAtAVertexHasItsFanRelayedThroughIt) {
                                    "e:28,37,0.50000000006", 15);
 }
 
+// The two meshes below: a convex planar patch (z = 0.5) under a strip of zero-area faces along
+// y = 2.5, the source on its edge 6-7 at x = 4 − (0.5 + 3.2e-11). The full check is clean and
+// every distance is the straight line from the source.
+void expectStraightLinesFromTheEdgeSourceOfAZeroAreaStrip(const std::string& file) {
+  const Mesh mesh = loadMesh(std::string(GEODEX_SOURCE_DIR) + "/tests/data/regression/" + file);
+  GeodesicSolver solver(mesh);
+  EXPECT_EQ(solveAndCheck(parseSurfacePoint("e:7,6,0.50000000003199996"), solver), "");
+  const Eigen::Vector2d source(4.0 - 0.50000000003199996, 2.5);
+  for (Index v = 0; v < mesh.numVertices(); ++v) {
+    const Eigen::Vector2d at = mesh.position(v).head<2>();
+    EXPECT_NEAR(solver.vertexDistances()[v], (at - source).norm(), 1e-10) << "vertex " << v;
+  }
+}
+
 // Found by fuzz_solver on 2026-11-26 (corpus/fuzz_solver/regress/vertex-agreement-edge-source-3e-
 // 11-from-a-vertex-lying-on-its-edge). An edge source 3.2e-11 from vertex 3, the apex of the
 // zero-area face that is its edge's only face and lies on that edge: every direction into the
@@ -415,17 +429,8 @@ TEST(SolverRegression, ASliverRemovedAtAVertexHasItsFanRelayedThroughIt) {
 // are rounding. Vertex 5 got 2.7361 (via vertex 7) where the straight line is 2.6926. The apex of
 // an edge source's face is now a pseudo-source from the start, as a face source's corners are.
 TEST(SolverRegression, AnEdgeSourceAHairFromTheApexOfItsFaceFansOutThroughThatApex) {
-  const std::string file = "edge-source-a-hair-from-the-apex-of-its-zero-area-face.off";
-  const Mesh mesh = loadMesh(std::string(GEODEX_SOURCE_DIR) + "/tests/data/regression/" + file);
-  GeodesicSolver solver(mesh);
-  EXPECT_EQ(solveAndCheck(parseSurfacePoint("e:7,6,0.50000000003199996"), solver), "");
-  // The patch is planar and convex: the distances are the straight lines from the source, at
-  // x = 4 − (0.5 + 3.2e-11) on the line y = 2.5.
-  const Eigen::Vector2d source(4.0 - 0.50000000003199996, 2.5);
-  for (Index v = 0; v < mesh.numVertices(); ++v) {
-    const Eigen::Vector2d at = mesh.position(v).head<2>();
-    EXPECT_NEAR(solver.vertexDistances()[v], (at - source).norm(), 1e-10) << "vertex " << v;
-  }
+  expectStraightLinesFromTheEdgeSourceOfAZeroAreaStrip(
+      "edge-source-a-hair-from-the-apex-of-its-zero-area-face.off");
 }
 
 // Found by fuzz_solver on 2026-11-27 (corpus/fuzz_solver/regress/vertex-agreement-edge-source-3e-
@@ -436,16 +441,8 @@ TEST(SolverRegression, AnEdgeSourceAHairFromTheApexOfItsFaceFansOutThroughThatAp
 // got 2.7361 (via vertex 7) where the straight line is 2.6926, and `geodex distance` exited 0.
 // The corners of the zero-area faces along the edge's line are now the source's corners too.
 TEST(SolverRegression, AnEdgeSourceAHairFromAVertexOnAZeroAreaFaceBesideItsOwnFansOutThroughIt) {
-  const std::string file =
-      "edge-source-a-hair-from-a-vertex-on-a-zero-area-face-beside-its-own.off";
-  const Mesh mesh = loadMesh(std::string(GEODEX_SOURCE_DIR) + "/tests/data/regression/" + file);
-  GeodesicSolver solver(mesh);
-  EXPECT_EQ(solveAndCheck(parseSurfacePoint("e:7,6,0.50000000003199996"), solver), "");
-  const Eigen::Vector2d source(4.0 - 0.50000000003199996, 2.5);
-  for (Index v = 0; v < mesh.numVertices(); ++v) {
-    const Eigen::Vector2d at = mesh.position(v).head<2>();
-    EXPECT_NEAR(solver.vertexDistances()[v], (at - source).norm(), 1e-10) << "vertex " << v;
-  }
+  expectStraightLinesFromTheEdgeSourceOfAZeroAreaStrip(
+      "edge-source-a-hair-from-a-vertex-on-a-zero-area-face-beside-its-own.off");
 }
 
 // OPEN (GEODEX_KNOWN_BUGS). Found by fuzz_solver on 2026-11-26 (corpus/fuzz_solver/regress/open-
