@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "geodex/error.h"
+#include "geodex/verify/cases/fuzz_solver.h"
 #include "geodex/verify/exact_predicates.h"
 #include "geodex/verify/mesh_generators.h"
 #include "geodex/verify/repro.h"
@@ -265,6 +266,59 @@ TEST(CheckRegression, APropagationWithASourceFartherThanAnyMeshCanPutItIsOutside
   near.window.source = Vec2(-1.4482826745237228e+65, 1.4482826745237228e+65);
   const Verdict w = checkPropagation(near);
   EXPECT_TRUE(w.interesting && w.ok()) << w.failed << ": " << w.message;
+}
+
+// `geodex check`'s planar oracle judged a flat mesh folded onto itself as the domain its boundary
+// encloses, where a corner of the source's own face came out unreachable: a false alarm. It
+// does not apply there
+// (PlanarDomain.AFlatMeshFoldedOntoItselfOrWoundTwiceIsNoEmbeddingOfItsBoundary).
+TEST(CheckRegression, ThePlanarOracleLeavesAFlatMeshFoldedOntoItselfAlone) {
+  TriangleSoup folded;
+  folded.positions = {{0, 1, 0}, {0.5, 2.5, 0}, {1, 2, 0}, {0, 2.5, 0}};
+  folded.faces = {{0, 2, 1}, {1, 2, 3}};
+  const Mesh mesh(folded);
+  const std::vector<SurfacePoint> sources = {SurfacePoint::atVertex(0)};
+  GeodesicSolver solver(mesh);
+  solver.solve(sources);
+  const auto d = solver.vertexDistancesInMeshUnits();
+  const OracleResult r = planarOracle(mesh, sources, {d.begin(), d.end()});
+  EXPECT_EQ(r.checked, 0u) << r.firstFailure;
+  EXPECT_EQ(r.failed, 0u) << r.firstFailure;
+}
+
+// A flat 4 × 4 grid 1e-6 across, 1000 from the origin: in mesh units (512 of the file's) 2e-9
+// across at 1.95, where a coordinate rounds by 1.1e-16, 5e-7 of the distances.
+SolverCase aSmallFlatGridFarFromTheOrigin() {
+  SolverCase c;
+  c.soup = gridMesh(4, 4, 1e-6, 1e-6);
+  for (Vec3& p : c.soup.positions) p += Vec3(1000, 1000, 0);
+  c.sources = {SurfacePoint::atVertex(0)};
+  c.planar = c.rectangle = true;
+  return c;
+}
+
+// The edge-midpoint check took the straight line from the source to a midpoint it placed in 3-D
+// as a lower bound to kRel × the distances, so the exact answer at the midpoint of edge 0-1 was
+// 1.1e-16 (one rounding of the midpoint's coordinates) below it: a false alarm, found when the
+// test below was written. It allows the placing rounding as the other oracles do.
+TEST(CheckRegression,
+     AFlatGridFarFromTheOriginPassesTheMidpointCheckThoughPlacingItsMidpointsRounds) {
+  const Verdict v = checkSolver(aSmallFlatGridFarFromTheOrigin());
+  EXPECT_TRUE(v.interesting && v.ok()) << v.failed << ": " << v.message;
+}
+
+// The oracles allow for the rounding of the points they place in 3-D (tol::kPositionRoundingRel
+// of the largest coordinate) and no more: on the grid above, a corner's distance 1e-13 mesh
+// units short of the straight line (4e-5 of it, 30 times the placing rounding) is caught by the
+// Euclidean lower bound.
+TEST(CheckRegression,
+     ADistanceShortOfTheStraightLineByMoreThanThePlacingRoundingIsCaughtFarFromTheOrigin) {
+  const SolverCase c = aSmallFlatGridFarFromTheOrigin();
+  const Index corner = static_cast<Index>(c.soup.positions.size() - 1);
+  ASSERT_NEAR((c.soup.positions[corner] - c.soup.positions[0]).norm(), std::sqrt(2.0) * 1e-6,
+              1e-12);
+  const Verdict wrong = checkSolverWithPlantedError(c, corner, -1e-13);
+  EXPECT_EQ(wrong.failed, "euclidean-lower-bound") << wrong.message;
 }
 
 // A face 2.3e-159 across squares its sides into subnormals at its own scale: the decoder took e0's

@@ -275,6 +275,48 @@ TEST(PlanarDomain, BoundaryPolygonsOfASoup) {
   EXPECT_THROW(planarBoundaryPolygons(bowtie), std::invalid_argument);
 }
 
+// PlanarDomain takes a flat mesh for an embedding of the domain its boundary encloses; a mesh
+// folded over itself is intrinsically flat too, but is not one. Two faces folded onto each other
+// (fuzz_solver's moved grid vertices make such folds: a reduction of
+// corpus/fuzz_solver/regress/open-vertex-agreement-edge-source-1.75e-10-from-a-vertex-beside-a-vertex-source):
+// the planar oracle called the apex (0.5, 2.5), a corner of both faces, unreachable. Nor is an
+// annulus wound twice around itself, whose face areas add up to what its boundary loops enclose.
+TEST(PlanarDomain, AFlatMeshFoldedOntoItselfOrWoundTwiceIsNoEmbeddingOfItsBoundary) {
+  EXPECT_TRUE(coversItsDomainOnce(gridMesh(3, 2, 3.0, 2.0),
+                                  planarBoundaryPolygons(gridMesh(3, 2, 3.0, 2.0))));
+  const TriangleSoup holed = squareWithHoleMesh(8, 1.0, 0.25);
+  EXPECT_TRUE(coversItsDomainOnce(holed, planarBoundaryPolygons(holed)));
+  const TriangleSoup lShape = lShapeMesh(4, 1.0, DiagonalPattern::Alternating);
+  EXPECT_TRUE(coversItsDomainOnce(lShape, planarBoundaryPolygons(lShape)));
+
+  TriangleSoup folded;
+  folded.positions = {{0, 1, 0}, {0.5, 2.5, 0}, {1, 2, 0}, {0, 2.5, 0}};
+  folded.faces = {{0, 2, 1}, {1, 2, 3}};
+  EXPECT_FALSE(coversItsDomainOnce(folded, planarBoundaryPolygons(folded)));
+
+  // Radii 1 and 2, twelve sectors a sheet; vertex k and k + 12 share a position.
+  TriangleSoup twice;
+  const int n = 12;
+  for (int k = 0; k < 2 * n; ++k)
+    for (double r : {1.0, 2.0})
+      twice.positions.emplace_back(r * std::cos(2 * std::numbers::pi * k / n),
+                                   r * std::sin(2 * std::numbers::pi * k / n), 0.0);
+  for (int k = 0; k < 2 * n; ++k) {
+    const Index in = 2 * k, out = 2 * k + 1, in1 = 2 * ((k + 1) % (2 * n)), out1 = in1 + 1;
+    twice.faces.push_back({in, out, out1});
+    twice.faces.push_back({in, out1, in1});
+  }
+  const auto loops = planarBoundaryPolygons(twice);
+  ASSERT_EQ(loops.size(), 2u);
+  EXPECT_FALSE(coversItsDomainOnce(twice, loops));
+  // The same annulus wound once is one.
+  TriangleSoup once = twice;
+  once.faces.resize(2 * n);
+  once.faces[2 * n - 2] = {2 * (n - 1), 2 * (n - 1) + 1, 1};
+  once.faces[2 * n - 1] = {2 * (n - 1), 1, 0};
+  EXPECT_TRUE(coversItsDomainOnce(once, planarBoundaryPolygons(once)));
+}
+
 // === Bound checks ==============================================================================
 
 struct Fields {

@@ -270,6 +270,9 @@ void planarInto(OracleResult& r, const Mesh& mesh, const std::vector<SurfacePoin
   } catch (const std::exception&) {
     return;  // a pinched boundary: the visibility-graph oracle does not apply
   }
+  // Nor to a mesh folded over itself: flat, but its geodesics are not the domain's shortest paths
+  // (CheckRegression.ThePlanarOracleLeavesAFlatMeshFoldedOntoItselfAlone).
+  if (!coversItsDomainOnce(flat, boundary)) return;
   // Only the vertices of faces are queried: an unreferenced one may lie outside the domain (its
   // distance is +inf anyway), and the oracle refuses such a query.
   const std::vector<Vec2> positions = planarPositions(flat);

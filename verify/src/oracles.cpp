@@ -11,6 +11,8 @@
 #include <stdexcept>
 #include <type_traits>
 
+#include "geodex/tolerance.h"
+
 namespace geodex::verify {
 
 namespace {
@@ -503,6 +505,58 @@ std::vector<Polygon2> planarBoundaryPolygons(const TriangleSoup& soup) {
     return std::abs(signedArea(a)) > std::abs(signedArea(b));
   });
   return loops;
+}
+
+namespace {
+
+/// The segments pq and ab share a point, or come within eps of each other at an end.
+bool segmentsMeet(const Vec2& p, const Vec2& q, const Vec2& a, const Vec2& b, double eps) {
+  const double pqa = cross2(q - p, a - p), pqb = cross2(q - p, b - p);
+  const double abp = cross2(b - a, p - a), abq = cross2(b - a, q - a);
+  if (((pqa < 0.0 && pqb > 0.0) || (pqa > 0.0 && pqb < 0.0)) &&
+      ((abp < 0.0 && abq > 0.0) || (abp > 0.0 && abq < 0.0)))
+    return true;
+  return pointSegmentDistance(a, p, q) <= eps || pointSegmentDistance(b, p, q) <= eps ||
+         pointSegmentDistance(p, a, b) <= eps || pointSegmentDistance(q, a, b) <= eps;
+}
+
+}  // namespace
+
+bool coversItsDomainOnce(const TriangleSoup& soup, const std::vector<Polygon2>& loops) {
+  if (loops.empty()) return false;
+  double faces = 0.0;
+  for (const auto& f : soup.faces) {
+    const Vec2 a = soup.positions[f[0]].head<2>(), b = soup.positions[f[1]].head<2>(),
+               c = soup.positions[f[2]].head<2>();
+    faces += 0.5 * std::abs(cross2(b - a, c - a));
+  }
+  double domain = std::abs(signedArea(loops[0]));
+  for (std::size_t i = 1; i < loops.size(); ++i) domain -= std::abs(signedArea(loops[i]));
+  if (!(std::abs(faces - domain) <= tol::kPlanarCoverRel * faces)) return false;
+  // Equal areas still allow a loop wound twice around a double cover: the loops must be simple.
+  struct Segment {
+    Vec2 p, q;
+    std::size_t loop, index;
+  };
+  std::vector<Segment> segments;
+  Eigen::AlignedBox2d box;
+  for (std::size_t l = 0; l < loops.size(); ++l)
+    for (std::size_t i = 0; i < loops[l].size(); ++i) {
+      segments.push_back({loops[l][i], loops[l][(i + 1) % loops[l].size()], l, i});
+      box.extend(loops[l][i]);
+    }
+  const double eps = PlanarDomain::kTouchRel * box.diagonal().norm();  // as PlanarDomain touches
+  for (std::size_t i = 0; i < segments.size(); ++i)
+    for (std::size_t j = i + 1; j < segments.size(); ++j) {
+      const Segment &s = segments[i], &t = segments[j];
+      if (s.loop == t.loop) {
+        const std::size_t n = loops[s.loop].size();
+        if (t.index == s.index + 1 || (s.index == 0 && t.index == n - 1))
+          continue;  // neighbours share an end
+      }
+      if (segmentsMeet(s.p, s.q, t.p, t.q, eps)) return false;
+    }
+  return true;
 }
 
 std::vector<Vec2> planarPositions(const TriangleSoup& soup) {

@@ -168,6 +168,13 @@ inline constexpr double kSnapParam = 1e-10;
 /// already 2e-9, far above ε × edge length.
 inline constexpr double kRoundingRel = 1e-14;
 
+/// How closely the face areas of a flat mesh must add up to the area its boundary loops enclose
+/// for the planar oracles to take the mesh as an embedding of that domain, relative to the sum.
+/// A face folded over another covers part of the domain twice and adds that part's area once
+/// more; the sum's own rounding is a few ulps a face (1e5 faces: 1e-11). A fold thinner than this
+/// is a sliver the check cannot tell from rounding.
+inline constexpr double kPlanarCoverRel = 1e-10;
+
 /// How far a surface point placed by its 3D position (a + t·(b − a) in doubles, as an oracle
 /// does) may lie from the exact point, relative to the largest coordinate magnitude of the mesh:
 /// each coordinate is rounded once to its ulp (2.2e-16 relative), √3 over the three, with

@@ -189,7 +189,9 @@ std::optional<std::vector<double>> planarReference(const Mesh& mesh, const Trian
                                                    const std::vector<Vec3>& sources) {
   if (mesh.numComponents() != 1) return std::nullopt;
   try {
-    PlanarDomain domain(planarBoundaryPolygons(soup));
+    std::vector<Polygon2> loops = planarBoundaryPolygons(soup);
+    if (!coversItsDomainOnce(soup, loops)) return std::nullopt;
+    PlanarDomain domain(std::move(loops));
     std::vector<Vec2> queries;
     std::vector<Index> which;
     for (Index x = 0; x < mesh.numVertices(); ++x) {
@@ -307,7 +309,10 @@ bool checkEdgeMidpoints(const SolvedCase& s, Verdict& v) {
     double lower = std::max(du, dv) - 0.5 * E.length;
     double nearest = INFINITY;
     for (const Vec3& p : s.sourcePositions) nearest = std::min(nearest, (p - mid).norm());
-    lower = std::max(lower, nearest);
+    // The midpoint and the sources are placed in 3-D, to the rounding of the coordinates: far
+    // from the origin that is more than kRel × a small mesh's distances
+    // (CheckRegression.AFlatGridFarFromTheOriginPassesTheMidpointCheckThoughPlacingItsMidpointsRounds).
+    lower = std::max(lower, nearest - sourcePlacement(s));
     const double upper = std::min(du, dv) + 0.5 * E.length;
     const double slack = kRel * (upper + s.diag);
     if (!(got >= lower - slack && got <= upper + slack)) {
@@ -436,7 +441,14 @@ bool checkSymmetricDistance(const SolvedCase& s, Index farthest, Verdict& v) {
 
 }  // namespace
 
-Verdict checkSolver(const SolverCase& c) {
+namespace {
+
+struct PlantedError {
+  Index vertex;
+  double amount;  ///< in mesh units
+};
+
+Verdict checkSolverWith(const SolverCase& c, const PlantedError* planted) {
   Verdict v;
   v.interesting = true;
   auto mesh = buildMesh(c.soup, v);
@@ -452,6 +464,7 @@ Verdict checkSolver(const SolverCase& c) {
   v.degeneracies = solver.counters();
   const auto meshUnitDistances = solver.vertexDistancesInMeshUnits();
   s.d.assign(meshUnitDistances.begin(), meshUnitDistances.end());
+  if (planted != nullptr) s.d.at(planted->vertex) += planted->amount;
   {
     std::ostringstream os;
     os << mesh->numFaces() << " faces, " << c.sources.size() << " source(s), "
@@ -472,6 +485,15 @@ Verdict checkSolver(const SolverCase& c) {
   if (!checkTargets(s, v)) return v;
   checkSymmetricDistance(s, farthest, v);
   return v;
+}
+
+}  // namespace
+
+Verdict checkSolver(const SolverCase& c) { return checkSolverWith(c, nullptr); }
+
+Verdict checkSolverWithPlantedError(const SolverCase& c, Index vertex, double errorInMeshUnits) {
+  const PlantedError planted{vertex, errorInMeshUnits};
+  return checkSolverWith(c, &planted);
 }
 
 // ===  Description and picture ===================================================================

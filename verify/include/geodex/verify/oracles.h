@@ -140,6 +140,13 @@ std::vector<double> planarDomainDistances(const std::vector<Polygon2>& boundary,
 /// or an edge is used by more than two faces.
 std::vector<Polygon2> planarBoundaryPolygons(const TriangleSoup& soup);
 
+/// True if the planar soup (x, y; z is ignored) covers the domain its boundary `loops` enclose
+/// (planarBoundaryPolygons) exactly once, which PlanarDomain takes for granted: the loops are
+/// simple and do not meet, and the face areas add up to the outer loop's minus the holes'
+/// (tol::kPlanarCoverRel). A mesh folded over itself (a face flipped onto its neighbours, a
+/// double cover) is intrinsically flat, but its geodesics are not the domain's shortest paths.
+bool coversItsDomainOnce(const TriangleSoup& soup, const std::vector<Polygon2>& loops);
+
 /// The x, y of every position (queries for PlanarDomain::distances).
 std::vector<Vec2> planarPositions(const TriangleSoup& soup);
 

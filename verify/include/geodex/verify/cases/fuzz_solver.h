@@ -75,6 +75,10 @@ struct SolverCase {
 std::optional<SolverCase> decodeSolver(std::span<const std::uint8_t> bytes);
 
 Verdict checkSolver(const SolverCase& c);
+/// checkSolver with a wrong distance planted in the solver's vertex distances before the oracles
+/// judge them (`errorInMeshUnits` added at `vertex`): how a test shows that the checks catch an
+/// error of a given size, and which check does.
+Verdict checkSolverWithPlantedError(const SolverCase& c, Index vertex, double errorInMeshUnits);
 
 /// The mesh as a tiny OFF file, the sources as `source SPEC` lines (SPEC as the CLI's --source
 /// takes it), and the options.
