@@ -261,11 +261,15 @@ TEST(CheckRegression, APropagationWithASourceFartherThanAnyMeshCanPutItIsOutside
   const Verdict v = checkPropagation(c);
   EXPECT_TRUE(v.ok()) << v.failed << ": " << v.message;
   EXPECT_FALSE(v.interesting) << v.summary;
-  // 1e100 face sizes away, within what a mesh can have, it is judged, and judged right.
-  PropagationCase near = c;
-  near.window.source = Vec2(-1.4482826745237228e+65, 1.4482826745237228e+65);
-  const Verdict w = checkPropagation(near);
-  EXPECT_TRUE(w.interesting && w.ok()) << w.failed << ": " << w.message;
+  // 1e100 and 1e110 face sizes away, within what a mesh can have (distances below 3e10 mesh
+  // units, faces at least 1e-100 across), it is judged, and judged right; 1e111 away it is not.
+  for (const double faceSizes : {1e100, 1e110, 1e111}) {
+    PropagationCase at = c;
+    at.window.source = faceSizes * Vec2(-1.4482826745237228e-35, 1.4482826745237228e-35);
+    const Verdict w = checkPropagation(at);
+    EXPECT_TRUE(w.ok()) << faceSizes << " face sizes: " << w.failed << ": " << w.message;
+    EXPECT_EQ(w.interesting, faceSizes <= 3e110) << faceSizes << " face sizes: " << w.summary;
+  }
 }
 
 // `geodex check`'s planar oracle judged a flat mesh folded onto itself as the domain its boundary

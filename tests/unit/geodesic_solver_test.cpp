@@ -115,6 +115,22 @@ TEST(PlanarConvex, ScaledByOneMillionthAndOneMillion) {
   }
 }
 
+// The tolerances are relative, and the shortest edge geodex computes with is 1e-100 of the mesh's
+// extent: an edge 1e-99 long beside edges of length 1 is measured to its own length, from either
+// end.
+TEST(PlanarConvex, AnEdge1e99TimesShorterThanTheMeshIsMeasuredToItsOwnLength) {
+  TriangleSoup soup;
+  soup.positions = {Vec3(0, 0, 0), Vec3(1e-99, 0, 0), Vec3(0, 1, 0), Vec3(1, 1, 0)};
+  soup.faces = {{0, 1, 2}, {1, 3, 2}};
+  const Mesh mesh(soup);
+  for (Index source : {0, 1}) {
+    const std::vector<double> d = solveChecked(mesh, {SurfacePoint::atVertex(source)});
+    const auto euclid = verify::euclideanDistances(soup.positions, soup.positions[source]);
+    for (std::size_t v = 0; v < d.size(); ++v)
+      EXPECT_LE(std::abs(d[v] - euclid[v]), 1e-12 * euclid[v]) << "from " << source << " to " << v;
+  }
+}
+
 // ===  Acceptance 2: planar non-convex domains, against visibility-graph shortest paths ==========
 
 void expectPlanarDomain(const std::string& name, const TriangleSoup& soup) {

@@ -603,11 +603,14 @@ TEST(MeshIoValidate, AnEdgeBelowTheSpreadGeodexComputesWithIsRefusedByName) {
   const auto tiny = validated("v 0 0 0\nv 1e-320 0 0\nv 0 1 0\nf 1 2 3\n");
   expectIssue(tiny, "edge-length-spread", Severity::Error,
               {"mem.obj:4:", "face 0", "edge 0-1", "weld the tiny edge"});
-  // 1e-120 of the extent: still refused; 1e-90: computed.
-  expectIssue(validated("v 0 0 0\nv 1e-120 0 0\nv 0 1 0\nf 1 2 3\n"), "edge-length-spread",
-              Severity::Error, {"face 0", "edge 0-1"});
-  for (const MeshIssue& i : validated("v 0 0 0\nv 1e-90 0 0\nv 0 1 0\nf 1 2 3\n"))
-    EXPECT_NE(i.severity, Severity::Error) << i.message;
+  // 1e-120 and 1e-101 of the extent: still refused; 1e-99 and 1e-90: computed.
+  for (const char* tooShort : {"1e-120", "1e-101"})
+    expectIssue(validated(std::string("v 0 0 0\nv ") + tooShort + " 0 0\nv 0 1 0\nf 1 2 3\n"),
+                "edge-length-spread", Severity::Error, {"face 0", "edge 0-1"});
+  for (const char* shortEnough : {"1e-99", "1e-90"})
+    for (const MeshIssue& i :
+         validated(std::string("v 0 0 0\nv ") + shortEnough + " 0 0\nv 0 1 0\nf 1 2 3\n"))
+      EXPECT_NE(i.severity, Severity::Error) << shortEnough << ": " << i.message;
   TriangleSoup soup;
   soup.positions = {Vec3(0, 0, 0), Vec3(1e-320, 0, 0), Vec3(0, 1, 0)};
   soup.faces = {{0, 1, 2}};
