@@ -286,13 +286,27 @@ TEST(PlanarDomain, AFlatMeshFoldedOntoItselfOrWoundTwiceIsNoEmbeddingOfItsBounda
                                   planarBoundaryPolygons(gridMesh(3, 2, 3.0, 2.0))));
   const TriangleSoup holed = squareWithHoleMesh(8, 1.0, 0.25);
   EXPECT_TRUE(coversItsDomainOnce(holed, planarBoundaryPolygons(holed)));
+  // 80,000 faces, whose areas add up to the loops' only to 5e-13 of the sum in doubles.
+  const TriangleSoup large = squareWithHoleMesh(200, 1.0, 0.3);
+  EXPECT_TRUE(coversItsDomainOnce(large, planarBoundaryPolygons(large)));
   const TriangleSoup lShape = lShapeMesh(4, 1.0, DiagonalPattern::Alternating);
   EXPECT_TRUE(coversItsDomainOnce(lShape, planarBoundaryPolygons(lShape)));
+
+  // Far from the origin, where the loop's own coordinates cancel: 1e-6 across at 1000.
+  TriangleSoup far = gridMesh(4, 4, 1e-6, 1e-6);
+  for (Vec3& p : far.positions) p += Vec3(1000, 1000, 0);
+  EXPECT_TRUE(coversItsDomainOnce(far, planarBoundaryPolygons(far)));
 
   TriangleSoup folded;
   folded.positions = {{0, 1, 0}, {0.5, 2.5, 0}, {1, 2, 0}, {0, 2.5, 0}};
   folded.faces = {{0, 2, 1}, {1, 2, 3}};
   EXPECT_FALSE(coversItsDomainOnce(folded, planarBoundaryPolygons(folded)));
+  // A sliver folded onto its neighbour: both apexes above the edge they share, the sliver's 1e-8
+  // above it, its area 1e-8 of the mesh's. Its boundary is a simple polygon.
+  TriangleSoup sliver;
+  sliver.positions = {{0, 0, 0}, {1, 0, 0}, {0.5, 1, 0}, {0.5, 1e-8, 0}};
+  sliver.faces = {{0, 1, 2}, {1, 0, 3}};
+  EXPECT_FALSE(coversItsDomainOnce(sliver, planarBoundaryPolygons(sliver)));
 
   // Radii 1 and 2, twelve sectors a sheet; vertex k and k + 12 share a position.
   TriangleSoup twice;
