@@ -157,13 +157,37 @@ def source_at(rev, path):
                           check=True).stdout
 
 
-def catalogue(seed, rev):
+def changed_lines(since, rev, path):
+    """The line numbers of path at rev that are new or changed since the commit `since`."""
+    diff = subprocess.run(["git", "diff", "-U0", since, rev, "--", path], cwd=ROOT, stdout=subprocess.PIPE,
+                          text=True, check=True).stdout
+    lines = set()
+    for m in re.finditer(r"^@@ -\S+ \+(\d+)(?:,(\d+))? @@", diff, re.M):
+        start, count = int(m.group(1)), int(m.group(2) or "1")
+        lines.update(range(start, start + count))
+    return lines
+
+
+# A supplement (--changed-since) plants this share of the sites on changed lines of each file (at
+# least one a file that has any), and every tolerance mutant of a changed tolerance line; the
+# files include the interval pool's header, whose code moved there after the first run.
+SUPPLEMENT_SHARE = 0.04
+SUPPLEMENT_EXTRA_FILES = ["solver/include/geodex/interval_pool.h"]
+
+
+def catalogue(seed, rev, since=None):
     """Every mutant of this run (sites in the commit rev): all tolerance mutants, a seeded sample
-    of the other sites."""
+    of the other sites. With `since`, only sites on lines changed since that commit (a supplement
+    to a run on it: the code written after it)."""
     rng = random.Random(seed)
     mutants = []
 
     def add(path, found, count):
+        if since is not None:
+            changed = changed_lines(since, rev, path)
+            found = [s for s in found if s[0] in changed]
+            if path != TOLERANCE_FILE:
+                count = max(1, round(SUPPLEMENT_SHARE * len(found))) if found else 0
         by_operator = {}
         for s in found:
             by_operator.setdefault(s[1], []).append(s)
@@ -186,7 +210,7 @@ def catalogue(seed, rev):
              "solver/include/geodex/predicates.h": 3, "solver/include/geodex/bucket_queue.h": 2,
              "verify/src/invariant_checker.cpp": 12, "verify/src/oracles.cpp": 6,
              "verify/src/exact_predicates.cpp": 4}
-    for path in SOLVER_FILES + VERIFY_FILES:
+    for path in SOLVER_FILES + VERIFY_FILES + (SUPPLEMENT_EXTRA_FILES if since is not None else []):
         add(path, sites(path, source_at(rev, path)), quota.get(path, 2))
     tol = tolerance_sites(source_at(rev, TOLERANCE_FILE))
     add(TOLERANCE_FILE, tol, len(tol))
@@ -433,6 +457,9 @@ def main():
                     help="the commit whose source is mutated (default HEAD): a run resumed in several "
                          "invocations names the one it started on, so that commits made meanwhile do "
                          "not change its catalogue")
+    ap.add_argument("--changed-since", metavar="REV",
+                    help="a supplement to a run on REV: only sites on lines changed between REV and "
+                         "the commit (SUPPLEMENT_SHARE of them a file, every changed tolerance)")
     a = ap.parse_args()
     # `kill -TERM` stops a run cleanly: the mutant being tested is put back in the worktree (the
     # finally of mutate_one) and left out of the results, to be run next time.
@@ -440,7 +467,7 @@ def main():
 
     head = subprocess.run(["git", "rev-parse", a.commit], cwd=ROOT, stdout=subprocess.PIPE, text=True,
                           check=True).stdout.strip()
-    mutants = catalogue(a.seed, head)
+    mutants = catalogue(a.seed, head, a.changed_since)
     if a.list:
         for m in mutants:
             print("%s\n  - %s\n  + %s" % (m["id"], m["before"].strip(), m["after"].strip()))
@@ -504,8 +531,8 @@ def main():
             sys.stderr.write("%s %s (%.0f s)\n" % (r["verdict"], r["by"], r["seconds"]))
     equivalents = load_equivalents(os.path.join(ROOT, "scripts", "mutation-equivalents.json"))
     adopted = load_equivalents(os.path.join(ROOT, "scripts", "mutation-adopted.json"))
-    report(catalogue(a.seed, head), results, a.report, a.seed, equivalents, adopted, head)
-    survived = [m["id"] for m in catalogue(a.seed, head) if results.get(m["id"], {}).get("verdict") == "survived"
+    report(catalogue(a.seed, head, a.changed_since), results, a.report, a.seed, equivalents, adopted, head)
+    survived = [m["id"] for m in catalogue(a.seed, head, a.changed_since) if results.get(m["id"], {}).get("verdict") == "survived"
                 and m["id"].rsplit(":", 1)[1] not in equivalents and m["id"].rsplit(":", 1)[1] not in adopted]
     print("report: %s; survivors: %s" % (a.report, ", ".join(survived) or "none"))
     return 0
