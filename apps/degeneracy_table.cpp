@@ -56,6 +56,8 @@ void writeDegeneracyTable(std::ostream& out, const DegeneracyCounters& counters)
       << counters.childEdgesSeenFromOutside << " child edges seen from outside the face\n";
   out << "D1 at a vertex: " << counters.d1FansRelayed
       << " vertices relaying the fan of a sliver removed there\n";
+  out << "G2/G3 at an apex: " << counters.g2g3FansRelayed
+      << " vertices relaying the fan beyond a window's ray through them\n";
 }
 
 }  // namespace geodex::cli

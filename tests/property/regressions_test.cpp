@@ -42,6 +42,7 @@
 #include "geodex/tolerance.h"
 #include "geodex/verify/invariant_checker.h"
 #include "geodex/verify/mesh_generators.h"
+#include "geodex/verify/oracles.h"
 
 namespace geodex::proptest {
 namespace {
@@ -445,6 +446,49 @@ TEST(SolverRegression, AnEdgeSourceAHairFromAVertexOnAZeroAreaFaceBesideItsOwnFa
       "edge-source-a-hair-from-a-vertex-on-a-zero-area-face-beside-its-own.off");
 }
 
+// Found by fuzz_solver on 2026-11-27 (corpus/fuzz_solver/regress/vertex-agreement-edge-source-
+// 1.75e-10-from-a-vertex-beside-a-vertex-source). The edge source 1.75e-10 from vertex 6 and v:0
+// meet on the line y = 1 through boundary vertex 9, where the source's windows and vertex 9's tie
+// to 1e-20. Step 3 gave D1 slivers to the coarser neighbour and moved their boundary 5e-12 past
+// that line; crossing face 4-11-10, vertex 9's window then had its edge ray through the apex 11
+// (G2) and stopped there, the source's window fell 2.2e-11 short of 11 on edge 4-11, and that
+// end kept a window 0.29 longer (vertex-agreement). The apex of a G2 or G3 window now relays the
+// fan beyond it.
+TEST(SolverRegression, TwoSourcesMeetingOnARayThroughAFaceApexLeaveNoWedgeBehindIt) {
+  const Mesh mesh =
+      loadMesh(std::string(GEODEX_SOURCE_DIR) +
+               "/tests/data/regression/two-sources-meeting-on-a-ray-through-a-face-apex.off");
+  const std::vector<SurfacePoint> sources = {parseSurfacePoint("e:6,13,1.75e-10"),
+                                             SurfacePoint::atVertex(0)};
+  GeodesicSolver solver(mesh);
+  verify::InvariantChecker checker(verify::CheckLevel::Full, /*throwOnViolation=*/false);
+  solver.setObserver(&checker);
+  solver.solve(sources);
+  solver.setObserver(nullptr);
+  EXPECT_EQ(checker.firstViolation(), nullptr) << checker.firstViolation()->what();
+  EXPECT_GE(solver.counters().g2g3FansRelayed, 1u);
+  expectEdgesAgreeAtVertex(solver, 11);
+  // Planar: every distance is the shortest path in the domain, and so is every edge's midpoint.
+  const auto boundary = verify::planarBoundaryPolygons(mesh.soup());
+  std::vector<Eigen::Vector2d> queries;
+  for (Index e = 0; e < mesh.numEdges(); ++e)
+    queries.push_back(
+        0.5 *
+        (mesh.position(mesh.edge(e).vertex[0]) + mesh.position(mesh.edge(e).vertex[1])).head<2>());
+  std::vector<double> exact(queries.size(), INFINITY);
+  for (const SurfacePoint& s : sources) {
+    const auto one = verify::planarDomainDistances(
+        boundary, verify::surfacePointPosition(mesh.soup(), s).head<2>(), queries);
+    for (std::size_t k = 0; k < queries.size(); ++k) exact[k] = std::min(exact[k], one[k]);
+  }
+  for (Index e = 0; e < mesh.numEdges(); ++e) {
+    const Edge& E = mesh.edge(e);
+    EXPECT_NEAR(solver.distance(SurfacePoint::onEdge(E.vertex[0], E.vertex[1], 0.5)), exact[e],
+                1e-9)
+        << "midpoint of edge " << E.vertex[0] << "-" << E.vertex[1];
+  }
+}
+
 // OPEN (GEODEX_KNOWN_BUGS). Found by fuzz_solver on 2026-11-26 (corpus/fuzz_solver/regress/open-
 // full-coverage-face-source-1e-8-from-a-corner-leaves-a-gap-of-2.6e-9). A face source 1.8e-8 from
 // vertex 2: on edge 11-16 the windows of the source and of two saddles it reaches along nearly one
@@ -458,16 +502,20 @@ TEST(SolverRegression, AFaceSourceAHairFromACornerLeavesNoGapDownstream) {
   EXPECT_EQ(solveAndCheck(parseSurfacePoint("f:0,1.27e-8,0,0.9999999873"), solver), "");
 }
 
-// Known bug (fuzz_solver, 2026-11-26; GEODEX_KNOWN_BUGS): a face source 1.3e-10 from a corner, on
-// a line with saddle 6 and vertex 14. On edge 11-14 the windows of saddle 6 and of the source end
-// 1.0e-10 and 1.1e-11 short of vertex 14 (rounding in rays that graze the corner), a stretch wider
-// than step 4 sews, and vertex 11's window along its own edge, 0.034 longer, takes it.
+// Found by fuzz_solver on 2026-11-26 (corpus/fuzz_solver/regress/vertex-agreement-face-source-
+// 1e-10-from-a-corner-leaves-an-edge-end-to-a-far-window): a face source 1.3e-10 from a corner, on
+// a line with saddle 6 and vertex 14. On edge 11-14 the windows of saddle 6 and of the source
+// ended 1.0e-10 and 1.1e-11 short of vertex 14 (rounding in rays that graze the corner), a
+// stretch wider than step 4 sews, and vertex 11's window along its own edge, 0.034 longer, took
+// it. Fixed on 2026-11-27 with the case below: the window whose ray runs through vertex 14 as the
+// apex of the face it crosses (G2/G3) makes 14 relay the fan beyond it.
 TEST(SolverRegression, AFaceSourceAHairFromACornerLeavesNoEdgeEndToAFarWindow) {
   const Mesh mesh =
       loadMesh(std::string(GEODEX_SOURCE_DIR) + "/tests/data/regression/" +
                "face-source-a-hair-from-a-corner-leaves-an-edge-end-to-a-far-window.off");
   GeodesicSolver solver(mesh);
   EXPECT_EQ(solveAndCheck(parseSurfacePoint("f:0,1.3e-10,0,0.99999999987"), solver), "");
+  EXPECT_GE(solver.counters().g2g3FansRelayed, 1u);
   expectEdgesAgreeAtVertex(solver, 14);
 }
 

@@ -278,7 +278,7 @@ TEST(PlanarDomain, BoundaryPolygonsOfASoup) {
 // PlanarDomain takes a flat mesh for an embedding of the domain its boundary encloses; a mesh
 // folded over itself is intrinsically flat too, but is not one. Two faces folded onto each other
 // (fuzz_solver's moved grid vertices make such folds: a reduction of
-// corpus/fuzz_solver/regress/open-vertex-agreement-edge-source-1.75e-10-from-a-vertex-beside-a-vertex-source):
+// corpus/fuzz_solver/regress/vertex-agreement-edge-source-1.75e-10-from-a-vertex-beside-a-vertex-source):
 // the planar oracle called the apex (0.5, 2.5), a corner of both faces, unreachable. Nor is an
 // annulus wound twice around itself, whose face areas add up to what its boundary loops enclose.
 TEST(PlanarDomain, AFlatMeshFoldedOntoItselfOrWoundTwiceIsNoEmbeddingOfItsBoundary) {

@@ -53,6 +53,10 @@ struct DegeneracyCounters {
   /// vertex then relays the fan they would have made (GeodesicSolver::relayFanThroughVertex):
   /// the vertices made pseudo-sources this way.
   std::uint64_t d1FansRelayed = 0;
+  /// Windows whose edge ray runs through the apex of the face they cross (G2, G3), whose apex
+  /// then relays the fan beyond it (GeodesicSolver::propagate): the vertices made pseudo-sources
+  /// this way.
+  std::uint64_t g2g3FansRelayed = 0;
 
   std::uint64_t& operator[](DegeneracyKind k) { return count[static_cast<std::size_t>(k)]; }
   std::uint64_t operator[](DegeneracyKind k) const { return count[static_cast<std::size_t>(k)]; }
@@ -66,6 +70,7 @@ struct DegeneracyCounters {
     sourceOnEdgeLineOutside += o.sourceOnEdgeLineOutside;
     childEdgesSeenFromOutside += o.childEdgesSeenFromOutside;
     d1FansRelayed += o.d1FansRelayed;
+    g2g3FansRelayed += o.g2g3FansRelayed;
     return *this;
   }
 };

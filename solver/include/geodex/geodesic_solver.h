@@ -116,7 +116,7 @@ class GeodesicSolver {
   void prefetchAhead() const;
   void updateVertex(Index v, double d);
   bool dominatedAtAnEdgeEnd(Index edge, const Interval& w);
-  void relayFanThroughVertex(Index v);
+  void relayFanThroughVertex(Index v, std::uint64_t& relayed);
   void createPseudoSourceWindows(Index v, double sigma, std::int32_t origin, int depth = 0,
                                  Index from = kNoIndex);
   void seedFaceFromPoint(Index f, const ResolvedPoint& p, Index skip, double sigma,
