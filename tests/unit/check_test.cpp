@@ -272,6 +272,23 @@ TEST(CheckRegression, APropagationWithASourceFartherThanAnyMeshCanPutItIsOutside
   }
 }
 
+// The solver snaps a source within tol::kSnapParam of a vertex onto it, as its contract says;
+// `geodex check`'s bounds held the solve to the straight line from the point as given, to 1e-12,
+// and failed a tetrahedron from e:0,1,5e-11 at vertex 0 (distance 0, 5e-11 below that line).
+// Found by a helper reducing a fuzz finding on 2026-11-27.
+TEST(CheckRegression, GeodexCheckAllowsTheSnapOfASourceAHairFromAVertex) {
+  TriangleSoup tetrahedron;
+  tetrahedron.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  tetrahedron.faces = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+  const Mesh mesh(tetrahedron);
+  CheckOptions options;
+  options.oracles = {"bounds"};
+  for (const char* source : {"e:0,1,5e-11", "e:0,1,0.5", "f:1,0.99999999995,0.00000000005,0"}) {
+    const CheckResult r = runChecks(mesh, {parseSurfacePoint(source)}, options);
+    EXPECT_TRUE(r.ok()) << source << ": " << (r.violations.empty() ? "" : r.violations.front());
+  }
+}
+
 // `geodex check`'s planar oracle judged a flat mesh folded onto itself as the domain its boundary
 // encloses, where a corner of the source's own face came out unreachable: a false alarm. It
 // does not apply there

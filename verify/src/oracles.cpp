@@ -574,6 +574,31 @@ std::vector<Vec2> planarPositions(const TriangleSoup& soup) {
   return xy;
 }
 
+double sourcePlacementSlack(const TriangleSoup& soup, std::span<const SurfacePoint> sources) {
+  // Where every distance is far below the rounding of the coordinates (a source very close to a
+  // vertex of a large mesh) placing alone is more than a relative tolerance of the distances
+  // (corpus/fuzz_solver/regress/{euclidean-lower,upper}-bound-source-placed-*); a vertex near a
+  // snapped source can come out below the straight line from where it was given
+  // (corpus/fuzz_solver/regress/euclidean-lower-bound-face-source-snapped-to-its-edge).
+  double largestCoordinate = 0.0;
+  for (const Vec3& x : soup.positions)
+    largestCoordinate = std::max(largestCoordinate, x.cwiseAbs().maxCoeff());
+  const double placing = 2.0 * tol::kPositionRoundingRel * largestCoordinate;
+  double slack = placing;
+  for (const SurfacePoint& src : sources) {
+    double longest = 0.0;
+    if (src.kind == SurfacePoint::Kind::Edge) {
+      longest = (soup.positions[src.vertex] - soup.positions[src.toVertex]).norm();
+    } else if (src.kind == SurfacePoint::Kind::Face) {
+      const auto& f = soup.faces[src.face];
+      for (int k = 0; k < 3; ++k)
+        longest = std::max(longest, (soup.positions[f[k]] - soup.positions[f[(k + 1) % 3]]).norm());
+    }
+    slack = std::max(slack, placing + tol::kSnapParam * longest);
+  }
+  return slack;
+}
+
 // === Bound checks ==============================================================================
 
 std::string CheckReport::summary() const {

@@ -247,33 +247,8 @@ bool checkDistanceValues(const SolvedCase& s, Verdict& v) {
   return true;
 }
 
-/// How far the oracles' sources may be from the solver's: the rounding of placing them in 3D,
-/// and the snap of a source near a vertex or an edge onto it.
-double sourcePlacement(const SolvedCase& s) {
-  // The oracles place the sources in 3D, to the rounding of the coordinates: where every
-  // distance is far below them (sources very close to a vertex of a large mesh), that is more
-  // than kRel × the distances (regress/{euclidean-lower,upper}-bound-source-placed-*).
-  double largestCoordinate = 0.0;
-  for (const Vec3& x : s.soup.positions) largestCoordinate = std::max(largestCoordinate, x.cwiseAbs().maxCoeff());
-  double placing = 2.0 * tol::kPositionRoundingRel * largestCoordinate;
-  // The solver takes a source within tol::kSnapParam of its face's barycentric range of a vertex
-  // or an edge as on it (surface_point.cpp, resolve): that moves it by at most kSnapParam × its
-  // face's longest edge, the contract kSnapParam documents, and a vertex near it can come out
-  // below the straight line from where the case put it
-  // (regress/euclidean-lower-bound-face-source-snapped-to-its-edge).
-  for (const SurfacePoint& src : s.c.sources) {
-    double longest = 0.0;
-    if (src.kind == SurfacePoint::Kind::Edge) {
-      longest = (s.soup.positions[src.vertex] - s.soup.positions[src.toVertex]).norm();
-    } else if (src.kind == SurfacePoint::Kind::Face) {
-      const auto& f = s.soup.faces[src.face];
-      for (int k = 0; k < 3; ++k)
-        longest = std::max(longest, (s.soup.positions[f[k]] - s.soup.positions[f[(k + 1) % 3]]).norm());
-    }
-    placing = std::max(placing, 2.0 * tol::kPositionRoundingRel * largestCoordinate + tol::kSnapParam * longest);
-  }
-  return placing;
-}
+/// How far the oracles' sources may be from the solver's (sourcePlacementSlack).
+double sourcePlacement(const SolvedCase& s) { return sourcePlacementSlack(s.soup, s.c.sources); }
 
 /// Euclidean ≤ d ≤ edge-graph Dijkstra, Lipschitz along edges, and on planar meshes the
 /// Euclidean (rectangle) or planar-domain distance.

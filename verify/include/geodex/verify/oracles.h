@@ -150,6 +150,13 @@ bool coversItsDomainOnce(const TriangleSoup& soup, const std::vector<Polygon2>& 
 /// The x, y of every position (queries for PlanarDomain::distances).
 std::vector<Vec2> planarPositions(const TriangleSoup& soup);
 
+/// How far an oracle's sources may be from the solver's, in the soup's units: the rounding of
+/// placing them in 3-D (tol::kPositionRoundingRel of the largest coordinate, for the source and
+/// for the point it is compared at), and the snap of a source within tol::kSnapParam of a vertex
+/// or an edge onto it (surface_point.cpp, resolve), which moves it by up to kSnapParam × its edge
+/// or its face's longest edge. The absTol of the bound checks below for a field of those sources.
+double sourcePlacementSlack(const TriangleSoup& soup, std::span<const SurfacePoint> sources);
+
 // === Bound checks ==============================================================================
 
 /// The outcome of a check over a distance field.
