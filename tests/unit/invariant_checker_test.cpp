@@ -160,6 +160,19 @@ TEST(InvariantChecker, IgnoringABetterIncomingIntervalFails) {
   EXPECT_EQ(violatedBy(u), "pointwise-min");
 }
 
+// The full tier holds each update to the exact pointwise minimum to what steps 1-5 may move it by
+// (a few 1e-10 of the distance plus the edge), so that it catches whatever breaks the solver's
+// promise of 1e-9 of the diagonal: an incoming window shorter than the list by 1e-8 of that,
+// everywhere on the edge, is not let through when ignored.
+TEST(InvariantChecker, IgnoringAnIncomingIntervalShorterByTenTimesTheAccuracyPromisedFails) {
+  Update u;
+  u.before = {make(0, kL, Vec2(5, 3), 1.0)};
+  const double longest = u.before[0].distanceAt(kL) + kL;  // distance plus edge length, at most
+  u.incoming = make(0, kL, Vec2(5, 3), 1.0 - 1e-8 * longest);
+  u.after = u.before;
+  EXPECT_EQ(violatedBy(u), "pointwise-min");
+}
+
 // The incoming window is shorter than the old one only on a stretch around its source's foot, at
 // neither end of the edge nor at its middle, where the old one wins: the full tier samples the
 // whole range the incoming interval reaches, so ignoring it fails on either half of the edge.
