@@ -399,7 +399,7 @@ def load_equivalents(path):
         return json.load(f)
 
 
-def report(mutants, results, path, seed, equivalents, adopted, commit):
+def report(mutants, results, path, seed, equivalents, adopted, commit, since=None):
     rows = []
     counts = {}
     for m in mutants:
@@ -424,11 +424,17 @@ def report(mutants, results, path, seed, equivalents, adopted, commit):
     scored = counts.get("killed", 0) + counts.get("survived", 0)
     with open(path, "w") as f:
         f.write("# Mutation testing\n\n")
-        f.write("Made by `scripts/mutate.sh --seed %d --commit %s` (scripts/mutate.py says how): the mutants "
-                "of commit %s. One planted bug at a time, "
+        if since is None:
+            made = "Made by `scripts/mutate.sh --seed %d --commit %s` (scripts/mutate.py says how): the mutants " \
+                   "of commit %s." % (seed, commit[:7], commit[:7])
+        else:
+            made = "Made by `scripts/mutate.sh --seed %d --commit %s --changed-since %s` (scripts/mutate.py says " \
+                   "how): a supplement to the run on %s, its mutants only on the lines of commit %s that are new " \
+                   "or changed since %s." % (seed, commit[:7], since, since, commit[:7], since)
+        f.write(made + " One planted bug at a time, "
                 "in its own git worktree: built with the release preset and tested (unit tests, properties with "
                 "CI's seed, then the rest of the release ctest with the corpus replay), and when those miss it, with the "
-                "debug preset (checks on).\n\n" % (seed, commit[:7], commit[:7]))
+                "debug preset (checks on).\n\n")
         f.write("Killed %d of %d scored mutants (%.1f %%); %d argued equivalent "
                 "(scripts/mutation-equivalents.json: the evidence is in the last column); %d adopted (a better "
                 "program than the original, which was changed to do what it does: "
@@ -531,7 +537,8 @@ def main():
             sys.stderr.write("%s %s (%.0f s)\n" % (r["verdict"], r["by"], r["seconds"]))
     equivalents = load_equivalents(os.path.join(ROOT, "scripts", "mutation-equivalents.json"))
     adopted = load_equivalents(os.path.join(ROOT, "scripts", "mutation-adopted.json"))
-    report(catalogue(a.seed, head, a.changed_since), results, a.report, a.seed, equivalents, adopted, head)
+    report(catalogue(a.seed, head, a.changed_since), results, a.report, a.seed, equivalents, adopted, head,
+           a.changed_since)
     survived = [m["id"] for m in catalogue(a.seed, head, a.changed_since) if results.get(m["id"], {}).get("verdict") == "survived"
                 and m["id"].rsplit(":", 1)[1] not in equivalents and m["id"].rsplit(":", 1)[1] not in adopted]
     print("report: %s; survivors: %s" % (a.report, ", ".join(survived) or "none"))
