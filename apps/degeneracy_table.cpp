@@ -58,6 +58,8 @@ void writeDegeneracyTable(std::ostream& out, const DegeneracyCounters& counters)
       << " vertices relaying the fan of a sliver removed there\n";
   out << "G2/G3 at an apex: " << counters.g2g3FansRelayed
       << " vertices relaying the fan beyond a window's ray through them\n";
+  out << "tie strips kept: " << counters.tieStripsKept
+      << " strips won by the tie rule only inside another window, left to it\n";
 }
 
 }  // namespace geodex::cli

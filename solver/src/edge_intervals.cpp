@@ -300,19 +300,90 @@ Winners findWinners(const Interval& in, const Interval& old, const SampledWinner
   return out;
 }
 
+// Whether `in` is nowhere on [lo, hi] shorter than `old` by more than the tie tolerance: where it
+// wins there, it wins by the tie rule only (incomingBeats). The difference of the two distances is
+// monotone on either side of the point x* (findWinners), so its ends, x* and the feet tell.
+bool winsOnlyByTie(const Interval& in, const Interval& old, double lo, double hi) {
+  const auto clearlyShorterAt = [&](double x) {
+    const double g = old.distanceAt(x);
+    return in.distanceAt(x) < g - tol::kTieRel * g;
+  };
+  if (clearlyShorterAt(lo) || clearlyShorterAt(hi)) return false;
+  const double y1 = in.source.y(), y2 = old.source.y();
+  if (y1 != y2) {
+    const double xStar = (in.source.x() * y2 - old.source.x() * y1) / (y2 - y1);
+    if (xStar > lo && xStar < hi && clearlyShorterAt(xStar)) return false;
+  } else if (y1 == 0.0) {
+    for (const double foot : {in.source.x(), old.source.x()})
+      if (foot > lo && foot < hi && clearlyShorterAt(foot)) return false;
+  }
+  return true;
+}
+
+// winsOnlyByTie on the whole piece keepShorter sampled, from the samples' distances (the same
+// points: its ends, x* or the feet).
+bool winsOnlyByTie(const SampledWinners& sampled) {
+  for (int k = 0; k < sampled.numSamples; ++k)
+    if (sampled.f[k] < sampled.g[k] - tol::kTieRel * sampled.g[k]) return false;
+  return true;
+}
+
+// A tie strip inside one window: where the incoming interval wins a piece of `old` by the tie rule
+// only and old's function goes on on both sides of that piece, old keeps it. Windows of two
+// pseudo-sources on one geodesic (a saddle s' on a geodesic from s, σ' = σ + |s s'|) tie along its
+// line beyond s'; the tie rule gave s, the smaller σ, a strip cut out of the middle of s''s
+// window, and downstream the two sources' rays through the strip's borders diverge: the strip's
+// rays fan out less than the hole it leaves in s''s, and the gaps beside it widened past what
+// step 4 sews (tests/data/regression/couplingdown-part-edge-source-leaves-a-gap.off). Kept whole,
+// old's window goes on in one piece; its distance on the strip is the incoming one's to the tie
+// tolerance. `cuts` is findWinners' answer on [old.b0, old.b1]; `oldBefore` (`oldAfter`): old's
+// function goes on before (after) that range. The Eq. 1 breakpoints findWinners reported at the
+// cuts that go are taken back.
+void keepTieStripsInsideOld(Winners& cuts, const Interval& in, const Interval& old,
+                            const SampledWinners& sampled, bool oldBefore, bool oldAfter,
+                            EdgeUpdateReport& report) {
+  if (in.side != old.side) return;  // (its rays go into the other face)
+  bool flipped = false;
+  for (int k = 0; k < cuts.m; ++k) {
+    if (!cuts.wins[k] || (k == 0 && !oldBefore) || (k == cuts.m - 1 && !oldAfter)) continue;
+    if (!(cuts.m == 1 ? winsOnlyByTie(sampled)
+                      : winsOnlyByTie(in, old, cuts.cut[k], cuts.cut[k + 1])))
+      continue;
+    cuts.wins[k] = false;
+    flipped = true;
+    ++report.degeneracies.tieStripsKept;
+  }
+  if (!flipped) return;
+  const int before = cuts.m - 1;  // breakpoints findWinners pushed, the last ones of the report
+  report.eq1Breakpoints.resize(report.eq1Breakpoints.size() - static_cast<std::size_t>(before));
+  int m = 0;
+  for (int k = 1; k < cuts.m; ++k) {
+    if (cuts.wins[k] == cuts.wins[m]) continue;
+    report.eq1Breakpoints.push_back(cuts.cut[k]);
+    cuts.cut[++m] = cuts.cut[k];
+    cuts.wins[m] = cuts.wins[k];
+  }
+  cuts.cut[++m] = cuts.cut[cuts.m];
+  cuts.m = m;
+}
+
 template <typename NewPiece, typename OldPiece>
 void keepShorter(const Interval& in, const Interval& old, const SampledWinners& sampled,
                  double edgeLength, EdgeUpdateReport& report, Pieces& out, NewPiece&& newPiece,
-                 OldPiece&& oldPiece) {
+                 OldPiece&& oldPiece, bool oldBefore, bool oldAfter) {
   if (sampled.uniform()) {
-    if (sampled.wins[0]) {
+    const bool tieStripKept =
+        sampled.wins[0] && oldBefore && oldAfter && in.side == old.side && winsOnlyByTie(sampled);
+    if (tieStripKept) ++report.degeneracies.tieStripsKept;
+    if (sampled.wins[0] && !tieStripKept) {
       newPiece(old.b0, old.b1);
     } else {
       out.push(old);  // as the caller cut it
     }
     return;
   }
-  const Winners cuts = findWinners(in, old, sampled, edgeLength, report);
+  Winners cuts = findWinners(in, old, sampled, edgeLength, report);
+  keepTieStripsInsideOld(cuts, in, old, sampled, oldBefore, oldAfter, report);
   for (int k = 0; k < cuts.m; ++k) {
     if (cuts.wins[k]) {
       newPiece(cuts.cut[k], cuts.cut[k + 1]);
@@ -515,7 +586,7 @@ void splitAndKeepShorter(std::span<const Interval> slice, std::size_t firstReach
                     reachedIndex == scan.lostPrefix && scan.stopSampled
                         ? scan.stop
                         : sampleWinners(in, w, w.b0, w.b1, edgeLength),
-                    edgeLength, report, out, newPiece, oldPiece);
+                    edgeLength, report, out, newPiece, oldPiece, before.b0 < w.b0, hasRight);
       }
     }
     if (hasRight) {  // 1.4's right piece
@@ -733,6 +804,41 @@ bool mergeSameSources(Slice& s) {
   return functionGrew;
 }
 
+// ===  Tie strips inside the incoming window
+// ======================================================= keepTieStripsInsideOld (step 2) for the
+// other order of arrival: an old interval t (or what step 2 left of it) lies between two pieces of
+// the incoming interval, touching both, on the same side, and the two distances tie over t's range
+// (to the tie tolerance, both ways). The incoming interval takes t's range: its rays cross it
+// anyway (its range was cut there by step 2, not by its own extent), and its distance there is t's
+// to the tie tolerance. Whichever of the two arrives first, the strip then goes to the window
+// around it. Pieces of the incoming interval are pending (or were made propagated, as its whole
+// range is), so none is propagated again.
+bool tiesOver(const Interval& a, const Interval& b, double lo, double hi) {
+  return winsOnlyByTie(a, b, lo, hi) && winsOnlyByTie(b, a, lo, hi);
+}
+
+bool isTieStripInsideIncoming(const Interval& p, const Interval& t, const Interval& q) {
+  return (p.flags & kFromIncoming) && (q.flags & kFromIncoming) && !(t.flags & kFromIncoming) &&
+         p.b1 == t.b0 && t.b1 == q.b0 && t.side == p.side && tiesOver(p, t, t.b0, t.b1);
+}
+
+void giveTieStripsToTheIncoming(Slice& s, EdgeUpdateReport& report) {
+  Interval* const L = s.L;
+  std::size_t w = 0;
+  for (std::size_t r = 0; r < s.m; ++r) {
+    if (!(w > 0 && r + 1 < s.m && isTieStripInsideIncoming(L[w - 1], L[r], L[r + 1]))) {
+      if (w != r) L[w] = L[r];
+      ++w;
+      continue;
+    }
+    const Interval t = L[r];
+    ++report.degeneracies.tieStripsKept;
+    std::erase_if(report.eq1Breakpoints, [&](double x) { return x == t.b0 || x == t.b1; });
+    setRange(L[w - 1], L[w - 1].b0, t.b1);  // step 5 joins it to the next piece
+  }
+  s.m = w;
+}
+
 // ===  Steps 3–5 ==================================================================================
 // They repeat while step 4 or 5 changes anything: an interval that grows over a sewn gap can come
 // to touch a coarser neighbour and be a D1 sliver next to it
@@ -761,6 +867,7 @@ bool repairSlice(Slice& s, EdgeUpdateReport& report) {
   // now, step 3 finds nothing in any pass.
   const bool mayHaveSlivers = shortest < sliverBound;
 
+  giveTieStripsToTheIncoming(s, report);
   for (bool again = true; again;) {
     if (mayHaveSlivers) removeTinyIntervals(s, sliverBound, report);
     const bool sewn = sewSmallGaps(s, report);
@@ -868,11 +975,13 @@ class OneReachedPieces {
       piece_[m_ - 1].b1 = hi;
       return;
     }
+    newMask_ |= 1u << m_;
     append(in, lo, hi);
     lastIsNew_ = true;
   }
   const Interval* data() const { return piece_; }
   std::size_t size() const { return m_; }
+  bool isNew(std::size_t k) const { return (newMask_ >> k) & 1u; }
   double shortest() const { return shortest_; }  // of the pieces before they were joined
   bool anyNew() const { return anyNew_; }
   bool anyOld() const { return anyOld_; }
@@ -894,6 +1003,7 @@ class OneReachedPieces {
     Interval piece_[kMaxPieces];  // (not constructed: filled before it is read)
   };
   std::size_t m_ = 0;
+  unsigned newMask_ = 0;
   double shortest_ = std::numeric_limits<double>::infinity();
   bool lastIsNew_ = false;
   bool anyNew_ = false;
@@ -938,10 +1048,10 @@ bool updateOneReached(IntervalList& list, std::size_t j, const Interval& incomin
   if (scan.lostPrefix > 0) {
     pieces.addOld(inside, inside.b0, inside.b1, minX, minAt);
   } else {
-    const Winners cuts = findWinners(
-        in, inside,
-        scan.stopSampled ? scan.stop : sampleWinners(in, inside, inside.b0, inside.b1, edgeLength),
-        edgeLength, report);
+    const SampledWinners sampled =
+        scan.stopSampled ? scan.stop : sampleWinners(in, inside, inside.b0, inside.b1, edgeLength);
+    Winners cuts = findWinners(in, inside, sampled, edgeLength, report);
+    keepTieStripsInsideOld(cuts, in, inside, sampled, w.b0<in.b0, w.b1> in.b1, report);
     for (int k = 0; k < cuts.m; ++k) {
       if (cuts.wins[k]) {
         pieces.addNew(in, cuts.cut[k], cuts.cut[k + 1]);
@@ -980,6 +1090,14 @@ bool updateOneReached(IntervalList& list, std::size_t j, const Interval& incomin
   };
   if ((prev != nullptr && sews(*prev, first)) || (next != nullptr && sews(last, *next)))
     return false;
+
+  // A piece of w between two of the incoming interval that ties it (giveTieStripsToTheIncoming).
+  for (std::size_t k = 0; k + 2 < pieces.size(); ++k) {
+    const Interval* p = &pieces.data()[k];
+    if (pieces.isNew(k) && !pieces.isNew(k + 1) && pieces.isNew(k + 2) && p[1].side == p[0].side &&
+        tiesOver(p[0], p[1], p[1].b0, p[1].b1))
+      return false;
+  }
 
   // Step 5 across the pieces' ends.
   if ((prev != nullptr && joins(*prev, first, edgeLength)) ||

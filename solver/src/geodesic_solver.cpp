@@ -472,6 +472,7 @@ void GeodesicSolver::addInterval(Index edge, const Interval& w, const Fig6Branch
   for (DegeneracyKind k :
        {DegeneracyKind::D1, DegeneracyKind::D2, DegeneracyKind::D3, DegeneracyKind::D4})
     counters_[k] += report_.degeneracies[k];  // (Algorithm 2 finds only these)
+  counters_.tieStripsKept += report_.degeneracies.tieStripsKept;
 
   // Every pending interval that is new or whose smallest distance moved may lower its edge
   // side's key; the others keep theirs, which the side's key is no larger than.

@@ -489,17 +489,21 @@ TEST(SolverRegression, TwoSourcesMeetingOnARayThroughAFaceApexLeaveNoWedgeBehind
   }
 }
 
-// OPEN (GEODEX_KNOWN_BUGS). Found by fuzz_solver on 2026-11-26 (corpus/fuzz_solver/regress/open-
-// full-coverage-face-source-1e-8-from-a-corner-leaves-a-gap-of-2.6e-9). A face source 1.8e-8 from
-// vertex 2: on edge 11-16 the windows of the source and of two saddles it reaches along nearly one
-// line interleave, and a gap of 1.9e-9 of the diagonal between two of them is left at the
-// end, wider than the shadows the end of a solve closes (tol::kShadowSewRel, the accuracy
-// contract's 1e-9 of the diagonal). Every vertex distance is right to 1.8e-8.
+// Found by fuzz_solver on 2026-11-26 (corpus/fuzz_solver/regress/full-coverage-face-source-1e-8-
+// from-a-corner-leaves-a-gap-of-2.6e-9). A face source 1.8e-8 from vertex 2: on edge 11-16 the
+// windows of the source and of two saddles it reaches along nearly one line interleave, and a gap
+// of 1.9e-9 of the diagonal between two of them is left at the end, wider than the shadows the
+// end of a solve closes (tol::kShadowSewRel, the accuracy contract's 1e-9 of the diagonal). Every
+// vertex distance is right to 1.8e-8. Where it started: on edge 5-9 a strip of the source's,
+// 4.9e-9 wide, tied with saddle 4's window over it and won it by the tie rule (smaller σ), cut
+// out of the middle of 4's window. Fixed on 2026-11-27 with the case below: a tie strip inside
+// one window stays with that window (edge_intervals.cpp, keepTieStripsInsideOld).
 TEST(SolverRegression, AFaceSourceAHairFromACornerLeavesNoGapDownstream) {
   const Mesh mesh = loadMesh(std::string(GEODEX_SOURCE_DIR) + "/tests/data/regression/" +
                              "face-source-a-hair-from-a-corner-leaves-a-gap-downstream.off");
   GeodesicSolver solver(mesh);
   EXPECT_EQ(solveAndCheck(parseSurfacePoint("f:0,1.27e-8,0,0.9999999873"), solver), "");
+  EXPECT_GE(solver.counters().tieStripsKept, 1u);
 }
 
 // Found by fuzz_solver on 2026-11-26 (corpus/fuzz_solver/regress/vertex-agreement-face-source-
@@ -519,7 +523,7 @@ TEST(SolverRegression, AFaceSourceAHairFromACornerLeavesNoEdgeEndToAFarWindow) {
   expectEdgesAgreeAtVertex(solver, 14);
 }
 
-// Known bug (scripts/check-cgal-meshes.sh, 2026-11-27; GEODEX_KNOWN_BUGS): libcgal-demo's
+// Found by scripts/check-cgal-meshes.sh on 2026-11-27: libcgal-demo's
 // couplingdown.off from the edge source e:1048,683,0.37 leaves a gap on edge 293-294 between a
 // saddle's sliver and a farther window, wider than the end of a solve closes. This is the mesh
 // cut to the faces nearer than 0.97 (the edge is at 0.84-0.89) and reduced, face by face, while
@@ -530,11 +534,19 @@ TEST(SolverRegression, AFaceSourceAHairFromACornerLeavesNoEdgeEndToAFarWindow) {
 // between windows of 45 on both sides (edge 12-28 and on), and the two sources' rays at its
 // borders miss each other by 6e-9 (edges 13-15, 13-14), wider than step 4 sews; the gaps widen
 // along the rays until, on edge 19-22, 7.1e-8 is left between the strip and 45's window.
+// The strip on edge 12-28 is 49's rays through 10-26's last 2.6e-8, which tie with 45's window
+// already there (45 arrived whole and was propagated first) and took the middle of it by σ.
+// Fixed on 2026-11-27: where an incoming window wins a piece of an old one by the tie rule only
+// and the old one goes on on both sides, the old one keeps it (keepTieStripsInsideOld); in the
+// other order the incoming window takes back an old strip it ties that its pieces enclose
+// (giveTieStripsToTheIncoming). The window stays in one piece, and its distance on the strip is
+// the other's to kTieRel.
 TEST(SolverRegression, AnEdgeSourceOnAPartOfCouplingdownLeavesNoGap) {
   const Mesh mesh = loadMesh(std::string(GEODEX_SOURCE_DIR) + "/tests/data/regression/" +
                              "couplingdown-part-edge-source-leaves-a-gap.off");
   GeodesicSolver solver(mesh);
   EXPECT_EQ(solveAndCheck(parseSurfacePoint("e:98,86,0.37"), solver), "");
+  EXPECT_GE(solver.counters().tieStripsKept, 1u);
 }
 
 }  // namespace

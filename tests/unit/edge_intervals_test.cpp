@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -189,6 +190,36 @@ TEST(Algorithm2, ATieBetweenASourceAndASaddleOnItsLineGoesToTheSourceInEitherOrd
     EXPECT_NEAR(e.list.intervals()[0].b1, 0.5, 1e-12) << (saddleFirst ? "saddle first" : "source first");
   }
 }
+// The same source s and saddle p, but p's window covers the whole edge (the old one, or arriving
+// second) and s's is a strip beside the line s → p (x = 0.5), where the two tie to rounding
+// (tests/data/regression/couplingdown-part-edge-source-leaves-a-gap.off, edge 12-28). Either way
+// round the strip stays p's: cut out of p's window by the tie rule, it left p | s | p, whose rays
+// at the strip's far border diverge on the next edges into gaps wider than step 4 sews. A strip
+// wide enough that s is shorter by more than the tie tolerance is s's (control).
+TEST(Algorithm2, ATieStripInsideAWindowStaysWithThatWindowInEitherOrder) {
+  const Vec2 s(0.1, 0.8), p(0.3, 0.4);
+  const Interval saddle = make(0.0, kL, p, (p - s).norm());
+  for (const double width : {1e-8, 1e-3}) {
+    const Interval direct = make(0.5, 0.5 + width, s, 0.0);
+    for (const bool saddleFirst : {true, false}) {
+      SCOPED_TRACE(std::string(saddleFirst ? "saddle first" : "source first") + ", strip " +
+                   std::to_string(width));
+      Edge1 e;
+      e.insert(saddleFirst ? saddle : direct);
+      e.insert(saddleFirst ? direct : saddle);
+      expectWellFormed(e.list);
+      if (width < 1e-6) {
+        ASSERT_EQ(e.list.intervals().size(), 1u);
+        EXPECT_EQ(e.list.intervals()[0].source, p);
+      } else {
+        ASSERT_EQ(e.list.intervals().size(), 3u);
+        EXPECT_EQ(e.list.intervals()[1].source, s);
+        expectPointwiseMin(e.list, {saddle, direct}, 0.0, kL);
+      }
+    }
+  }
+}
+
 // Two pseudo-sources on the edge line at or behind its start, the far one reaching the near one
 // straight (σ_near = σ_far + their distance): their distances tie on the whole window, up to
 // rounding, and the far one (σ smaller) keeps it in either order. The near one's window is a

@@ -57,6 +57,10 @@ struct DegeneracyCounters {
   /// then relays the fan beyond it (GeodesicSolver::propagate): the vertices made pseudo-sources
   /// this way.
   std::uint64_t g2g3FansRelayed = 0;
+  /// Strips of an edge that the incoming window won by Algorithm 2's tie rule only, inside
+  /// another window that goes on on both sides, left to that window (step 2) or given back to the
+  /// incoming one around them (before steps 3–5): see edge_intervals.cpp, keepTieStripsInsideOld.
+  std::uint64_t tieStripsKept = 0;
 
   std::uint64_t& operator[](DegeneracyKind k) { return count[static_cast<std::size_t>(k)]; }
   std::uint64_t operator[](DegeneracyKind k) const { return count[static_cast<std::size_t>(k)]; }
@@ -71,6 +75,7 @@ struct DegeneracyCounters {
     childEdgesSeenFromOutside += o.childEdgesSeenFromOutside;
     d1FansRelayed += o.d1FansRelayed;
     g2g3FansRelayed += o.g2g3FansRelayed;
+    tieStripsKept += o.tieStripsKept;
     return *this;
   }
 };
