@@ -56,7 +56,7 @@ void writeDegeneracyTable(std::ostream& out, const DegeneracyCounters& counters)
       << counters.childEdgesSeenFromOutside << " child edges seen from outside the face\n";
   out << "D1 at a vertex: " << counters.d1FansRelayed
       << " vertices relaying the fan of a sliver removed there\n";
-  out << "G2/G3 at an apex: " << counters.g2g3FansRelayed
+  out << "G2-G5 at an apex: " << counters.apexFansRelayed
       << " vertices relaying the fan beyond a window's ray through them\n";
   out << "tie strips kept: " << counters.tieStripsKept
       << " strips won by the tie rule only inside another window, left to it\n";

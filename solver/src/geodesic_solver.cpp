@@ -369,14 +369,17 @@ void GeodesicSolver::propagate(Index edge, const Interval& w, Index f, const Fac
   if (result.branch == Fig6Branch::ZeroAreaFace) ++counters_.zeroAreaFaces;
   if (result.branch == Fig6Branch::G1Outside) ++counters_.sourceOnEdgeLineOutside;
   if (hooked()) observer_->onPropagation({f, edge, w, local, result});
-  // A G2 or G3 window's edge ray runs through the apex, and the far edge's side next to the apex
-  // is left to the neighbouring window. One of another source can fan away from this ray there:
-  // their boundary, exact on the line through the apex, moved 5e-12 off it when step 3 gave a D1
-  // sliver to the coarser neighbour, and a wedge 2e-11 wide behind the apex was reached by neither
-  // (SolverRegression.TwoSourcesMeetingOnARayThroughAFaceApexLeaveNoWedgeBehindIt). The apex
+  // In G2–G5 a window's edge ray runs through the apex, and the far edge's side next to the apex
+  // is left to the neighbouring window, which can fan away from this ray there: two sources'
+  // boundary, exact on a line through the apex, moved 5e-12 off it when step 3 gave a D1 sliver
+  // to the coarser neighbour, and a wedge 2e-11 wide behind the apex was reached by neither
+  // (SolverRegression.TwoSourcesMeetingOnARayThroughAFaceApexLeaveNoWedgeBehindIt, G2); an edge
+  // source on a line through two vertices lost the fan beyond them the same way
+  // (SolverRegression.AnEdgeSourceOnALineThroughTwoVerticesReachesBeyondThem, G4/G5). The apex
   // relays the fan: a path along the ray and on from the apex is a real path.
-  if (result.branch == Fig6Branch::G2 || result.branch == Fig6Branch::G3) [[unlikely]]
-    relayFanThroughVertex(fr.apex, counters_.g2g3FansRelayed);
+  if (result.branch == Fig6Branch::G2 || result.branch == Fig6Branch::G3 ||
+      result.branch == Fig6Branch::G4 || result.branch == Fig6Branch::G5) [[unlikely]]
+    relayFanThroughVertex(fr.apex, counters_.apexFansRelayed);
 
   const bool oneLine = childEdgesOnOneLine(local);
   for (int c = 0; c < result.numChildren; ++c) {
@@ -548,7 +551,7 @@ void GeodesicSolver::updateVertex(Index v, double d) {
 // (corpus/fuzz_solver/regress/vertex-agreement-d1-sliver-at-a-vertex-loses-its-fan-beyond-it).
 // v emits windows from then on, as a saddle does: a path through v is a real path, and one to
 // where the sliver's rays reach is at most twice the sliver's length longer than theirs. propagate
-// relays the apex of a G2 or G3 window for the same reason; `relayed` counts either kind.
+// relays the apex of a G2–G5 window for the same reason; `relayed` counts either kind.
 void GeodesicSolver::relayFanThroughVertex(Index v, std::uint64_t& relayed) {
   if (emitsWindows_[v]) return;
   emitsWindows_[v] = 1;

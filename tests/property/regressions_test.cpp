@@ -466,7 +466,7 @@ TEST(SolverRegression, TwoSourcesMeetingOnARayThroughAFaceApexLeaveNoWedgeBehind
   solver.solve(sources);
   solver.setObserver(nullptr);
   EXPECT_EQ(checker.firstViolation(), nullptr) << checker.firstViolation()->what();
-  EXPECT_GE(solver.counters().g2g3FansRelayed, 1u);
+  EXPECT_GE(solver.counters().apexFansRelayed, 1u);
   expectEdgesAgreeAtVertex(solver, 11);
   // Planar: every distance is the shortest path in the domain, and so is every edge's midpoint.
   const auto boundary = verify::planarBoundaryPolygons(mesh.soup());
@@ -487,6 +487,25 @@ TEST(SolverRegression, TwoSourcesMeetingOnARayThroughAFaceApexLeaveNoWedgeBehind
                 1e-9)
         << "midpoint of edge " << E.vertex[0] << "-" << E.vertex[1];
   }
+}
+
+// Found on 2026-11-27 by a mutation sweep over the corpus (corpus/fuzz_solver/regress/vertex-
+// agreement-edge-source-6e-11-from-a-midpoint-on-a-line-through-two-vertices). An edge source
+// 6e-11 off the midpoint (1, 3.5) of edge 20-24, on the line through vertices 16 (4, 2) and
+// 10 (5, 1.5) to vertex 11 (6, 1): windows ray along that line through 16 and 10 as the apexes of
+// the faces they cross (G4, G5), and the fan beyond them was left to neighbours that missed
+// vertex 11's end of edge 4-11, which kept a window 0.53 longer (vertex-agreement). The apex of a
+// G4/G5 window now relays the fan, as a G2/G3 one's does.
+TEST(SolverRegression, AnEdgeSourceOnALineThroughTwoVerticesReachesBeyondThem) {
+  const Mesh mesh =
+      loadMesh(std::string(GEODEX_SOURCE_DIR) + "/tests/data/regression/" +
+               "edge-source-on-a-line-through-two-vertices-loses-the-fan-beyond-them.off");
+  GeodesicSolver solver(mesh);
+  EXPECT_EQ(solveAndCheck(parseSurfacePoint("e:20,24,0.50000000006"), solver), "");
+  EXPECT_GE(solver.counters().apexFansRelayed, 1u);
+  expectEdgesAgreeAtVertex(solver, 11);
+  const Eigen::Vector2d source(1.0, 3.50000000006);
+  EXPECT_NEAR(solver.vertexDistances()[11], (mesh.position(11).head<2>() - source).norm(), 1e-9);
 }
 
 // Found by fuzz_solver on 2026-11-26 (corpus/fuzz_solver/regress/full-coverage-face-source-1e-8-
@@ -512,14 +531,14 @@ TEST(SolverRegression, AFaceSourceAHairFromACornerLeavesNoGapDownstream) {
 // ended 1.0e-10 and 1.1e-11 short of vertex 14 (rounding in rays that graze the corner), a
 // stretch wider than step 4 sews, and vertex 11's window along its own edge, 0.034 longer, took
 // it. Fixed on 2026-11-27 with the case below: the window whose ray runs through vertex 14 as the
-// apex of the face it crosses (G2/G3) makes 14 relay the fan beyond it.
+// apex of the face it crosses (G2) makes 14 relay the fan beyond it.
 TEST(SolverRegression, AFaceSourceAHairFromACornerLeavesNoEdgeEndToAFarWindow) {
   const Mesh mesh =
       loadMesh(std::string(GEODEX_SOURCE_DIR) + "/tests/data/regression/" +
                "face-source-a-hair-from-a-corner-leaves-an-edge-end-to-a-far-window.off");
   GeodesicSolver solver(mesh);
   EXPECT_EQ(solveAndCheck(parseSurfacePoint("f:0,1.3e-10,0,0.99999999987"), solver), "");
-  EXPECT_GE(solver.counters().g2g3FansRelayed, 1u);
+  EXPECT_GE(solver.counters().apexFansRelayed, 1u);
   expectEdgesAgreeAtVertex(solver, 14);
 }
 

@@ -53,10 +53,10 @@ struct DegeneracyCounters {
   /// vertex then relays the fan they would have made (GeodesicSolver::relayFanThroughVertex):
   /// the vertices made pseudo-sources this way.
   std::uint64_t d1FansRelayed = 0;
-  /// Windows whose edge ray runs through the apex of the face they cross (G2, G3), whose apex
+  /// Windows whose edge ray runs through the apex of the face they cross (G2–G5), whose apex
   /// then relays the fan beyond it (GeodesicSolver::propagate): the vertices made pseudo-sources
   /// this way.
-  std::uint64_t g2g3FansRelayed = 0;
+  std::uint64_t apexFansRelayed = 0;
   /// Strips of an edge that the incoming window won by Algorithm 2's tie rule only, inside
   /// another window that goes on on both sides, left to that window (step 2) or given back to the
   /// incoming one around them (before steps 3–5): see edge_intervals.cpp, keepTieStripsInsideOld.
@@ -74,7 +74,7 @@ struct DegeneracyCounters {
     sourceOnEdgeLineOutside += o.sourceOnEdgeLineOutside;
     childEdgesSeenFromOutside += o.childEdgesSeenFromOutside;
     d1FansRelayed += o.d1FansRelayed;
-    g2g3FansRelayed += o.g2g3FansRelayed;
+    apexFansRelayed += o.apexFansRelayed;
     tieStripsKept += o.tieStripsKept;
     return *this;
   }
