@@ -303,7 +303,15 @@ Winners findWinners(const Interval& in, const Interval& old, const SampledWinner
 // Whether `in` is nowhere on [lo, hi] shorter than `old` by more than the tie tolerance: where it
 // wins there, it wins by the tie rule only (incomingBeats). The difference of the two distances is
 // monotone on either side of the point x* (findWinners), so its ends, x* and the feet tell.
-bool winsOnlyByTie(const Interval& in, const Interval& old, double lo, double hi) {
+bool winsOnlyByTie(const Interval& in, const Interval& old, double lo, double hi,
+                   const SampledWinners* sampled = nullptr) {
+  // A sample of the whole old range inside [lo, hi] where `in` is clearly shorter settles it with
+  // no new distance: most pieces `in` wins, it wins by far more than a tie.
+  if (sampled != nullptr)
+    for (int k = 0; k < sampled->numSamples; ++k)
+      if (sampled->sample[k] >= lo && sampled->sample[k] <= hi &&
+          sampled->f[k] < sampled->g[k] - tol::kTieRel * sampled->g[k])
+        return false;
   const auto clearlyShorterAt = [&](double x) {
     const double g = old.distanceAt(x);
     return in.distanceAt(x) < g - tol::kTieRel * g;
@@ -347,7 +355,7 @@ void keepTieStripsInsideOld(Winners& cuts, const Interval& in, const Interval& o
   for (int k = 0; k < cuts.m; ++k) {
     if (!cuts.wins[k] || (k == 0 && !oldBefore) || (k == cuts.m - 1 && !oldAfter)) continue;
     if (!(cuts.m == 1 ? winsOnlyByTie(sampled)
-                      : winsOnlyByTie(in, old, cuts.cut[k], cuts.cut[k + 1])))
+                      : winsOnlyByTie(in, old, cuts.cut[k], cuts.cut[k + 1], &sampled)))
       continue;
     cuts.wins[k] = false;
     flipped = true;
@@ -854,9 +862,12 @@ bool repairSlice(Slice& s, EdgeUpdateReport& report) {
   // kTinyIntervalRel, of the interval or a neighbour; steps 3–5 move ranges, never sources):
   // most of a solve's intervals are told apart by one comparison.
   double largestScale = s.edgeLength, shortest = s.edgeLength;
+  int incomingRuns = 0;  // runs of the incoming interval's pieces: a tie strip needs two
   for (std::size_t k = 0; k < s.m; ++k) {
     largestScale = std::max(largestScale, intervalLengthScale(s.L[k], s.edgeLength));
     shortest = std::min(shortest, s.L[k].length());
+    incomingRuns +=
+        (s.L[k].flags & kFromIncoming) && (k == 0 || !(s.L[k - 1].flags & kFromIncoming));
   }
   if (s.outerPrev != nullptr)
     largestScale = std::max(largestScale, intervalLengthScale(*s.outerPrev, s.edgeLength));
@@ -867,7 +878,8 @@ bool repairSlice(Slice& s, EdgeUpdateReport& report) {
   // now, step 3 finds nothing in any pass.
   const bool mayHaveSlivers = shortest < sliverBound;
 
-  giveTieStripsToTheIncoming(s, report);
+  if (incomingRuns >= 2) [[unlikely]]
+    giveTieStripsToTheIncoming(s, report);
   for (bool again = true; again;) {
     if (mayHaveSlivers) removeTinyIntervals(s, sliverBound, report);
     const bool sewn = sewSmallGaps(s, report);
