@@ -410,6 +410,37 @@ TEST(SolverApi, DistanceAtAnyPointAndPathLengthAgree) {
   }
 }
 
+// A geodesic on a flat grid is the straight segment, also where it passes a hair from a vertex:
+// the tracer takes a crossing for the vertex only within rounding of it (tol::kPathSamePointRel),
+// not 1e-9 away, where turning at the vertex would put a path point off the line. From (0, 0) to
+// (1, 0.5 + 2e-9) the line passes 1e-9 above vertex (0.5, 0.25).
+TEST(SolverApi, APathPassingAHairFromAVertexStaysOnItsStraightLine) {
+  const TriangleSoup soup = verify::gridMesh(4, 4, 1.0, 1.0);
+  const Mesh mesh(soup);
+  const auto vertexAt = [&](double x, double y) {
+    for (Index v = 0; v < mesh.numVertices(); ++v)
+      if (soup.positions[v] == Vec3(x, y, 0)) return v;
+    ADD_FAILURE() << "no vertex at " << x << ", " << y;
+    return Index(0);
+  };
+  GeodesicSolver solver(mesh);
+  solver.solve(std::vector<SurfacePoint>{SurfacePoint::atVertex(vertexAt(0, 0))});
+  const SurfacePoint target =
+      SurfacePoint::onEdge(vertexAt(1, 0.5), vertexAt(1, 0.75), 2e-9 / 0.25);
+  const GeodesicPath path = solver.path(target);
+  ASSERT_GE(path.points.size(), 2u);
+  const Vec3 end(1, 0.5 + 2e-9, 0);
+  const Vec3 direction = end.normalized();
+  bool passesTheVertex = false;
+  for (const PathPoint& p : path.points) {
+    const double off = (p.position - p.position.dot(direction) * direction).norm();
+    EXPECT_LE(off, 1e-13) << formatSurfacePoint(p.where) << " is " << off << " off the line";
+    passesTheVertex |= std::abs(p.position.x() - 0.5) < 1e-6;
+  }
+  EXPECT_TRUE(passesTheVertex) << "the path has no point near x = 0.5";
+  EXPECT_NEAR(path.length, end.norm(), 1e-12);
+}
+
 TEST(SolverApi, PathOnACurvedSurfaceHasTheDistanceAsLength) {
   const Mesh mesh(verify::icosphereMesh(3, 1.0));
   GeodesicSolver solver(mesh);
