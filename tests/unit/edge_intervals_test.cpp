@@ -190,6 +190,7 @@ TEST(Algorithm2, ATieBetweenASourceAndASaddleOnItsLineGoesToTheSourceInEitherOrd
     EXPECT_NEAR(e.list.intervals()[0].b1, 0.5, 1e-12) << (saddleFirst ? "saddle first" : "source first");
   }
 }
+
 // The same source s and saddle p, but p's window covers the whole edge (the old one, or arriving
 // second) and s's is a strip beside the line s → p (x = 0.5), where the two tie to rounding
 // (tests/data/regression/couplingdown-part-edge-source-leaves-a-gap.off, edge 12-28). Either way
