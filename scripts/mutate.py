@@ -497,6 +497,10 @@ def main():
     if todo:
         if not os.path.isdir(a.worktree):
             subprocess.run(["git", "worktree", "add", "--detach", a.worktree, head], cwd=ROOT, check=True)
+        # A worktree a run with --tests-patch left has those tests changed: put them back first,
+        # or the checkout of another commit refuses to overwrite them.
+        subprocess.run(["git", "checkout", "--", "tests"], cwd=a.worktree, check=True)
+        subprocess.run(["git", "clean", "-fdq", "--", "tests"], cwd=a.worktree, check=True)
         subprocess.run(["git", "checkout", "--detach", head], cwd=a.worktree, check=True)
         # The worktree's tests are the commit's, plus a patch when one is given (tests written for
         # survivors and not committed yet: `git diff HEAD -- tests`; the mutant is then re-run
