@@ -32,6 +32,7 @@
 #include <cmath>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "generators.h"
@@ -75,11 +76,15 @@ void expectEdgesAgreeAtVertex(const GeodesicSolver& solver, Index v) {
 
 // A mesh of tests/data/regression solved from `source` with the full-tier checker: no invariant
 // broken, and every edge at vertex v gives D(v) there.
-void expectCheckedSolveAgreesAtVertex(const std::string& file, const std::string& source, Index v) {
+// Returns the solve's counters (which repair it needed) and D(v), in the mesh file's units.
+std::pair<DegeneracyCounters, double> expectCheckedSolveAgreesAtVertex(const std::string& file,
+                                                                       const std::string& source,
+                                                                       Index v) {
   const Mesh mesh = loadMesh(std::string(GEODEX_SOURCE_DIR) + "/tests/data/regression/" + file);
   GeodesicSolver solver(mesh);
   EXPECT_EQ(solveAndCheck(parseSurfacePoint(source), solver), "");
   expectEdgesAgreeAtVertex(solver, v);
+  return {solver.counters(), solver.vertexDistances()[v]};
 }
 
 // Case 1: a 2×2 grid whose centre vertex 4 is raised (a convex cone: angle sum 6.03 < 2π, so not a
@@ -497,15 +502,11 @@ TEST(SolverRegression, TwoSourcesMeetingOnARayThroughAFaceApexLeaveNoWedgeBehind
 // vertex 11's end of edge 4-11, which kept a window 0.53 longer (vertex-agreement). The apex of a
 // G4/G5 window now relays the fan, as a G2/G3 one's does.
 TEST(SolverRegression, AnEdgeSourceOnALineThroughTwoVerticesReachesBeyondThem) {
-  const Mesh mesh =
-      loadMesh(std::string(GEODEX_SOURCE_DIR) + "/tests/data/regression/" +
-               "edge-source-on-a-line-through-two-vertices-loses-the-fan-beyond-them.off");
-  GeodesicSolver solver(mesh);
-  EXPECT_EQ(solveAndCheck(parseSurfacePoint("e:20,24,0.50000000006"), solver), "");
-  EXPECT_GE(solver.counters().apexFansRelayed, 1u);
-  expectEdgesAgreeAtVertex(solver, 11);
-  const Eigen::Vector2d source(1.0, 3.50000000006);
-  EXPECT_NEAR(solver.vertexDistances()[11], (mesh.position(11).head<2>() - source).norm(), 1e-9);
+  const auto [counters, d11] = expectCheckedSolveAgreesAtVertex(
+      "edge-source-on-a-line-through-two-vertices-loses-the-fan-beyond-them.off",
+      "e:20,24,0.50000000006", 11);
+  EXPECT_GE(counters.apexFansRelayed, 1u);
+  EXPECT_NEAR(d11, std::hypot(6.0 - 1.0, 1.0 - 3.50000000006), 1e-9);  // vertex 11 is (6, 1)
 }
 
 // Found by fuzz_solver on 2026-11-26 (corpus/fuzz_solver/regress/full-coverage-face-source-1e-8-
@@ -533,13 +534,12 @@ TEST(SolverRegression, AFaceSourceAHairFromACornerLeavesNoGapDownstream) {
 // it. Fixed on 2026-11-27 with the case below: the window whose ray runs through vertex 14 as the
 // apex of the face it crosses (G2) makes 14 relay the fan beyond it.
 TEST(SolverRegression, AFaceSourceAHairFromACornerLeavesNoEdgeEndToAFarWindow) {
-  const Mesh mesh =
-      loadMesh(std::string(GEODEX_SOURCE_DIR) + "/tests/data/regression/" +
-               "face-source-a-hair-from-a-corner-leaves-an-edge-end-to-a-far-window.off");
-  GeodesicSolver solver(mesh);
-  EXPECT_EQ(solveAndCheck(parseSurfacePoint("f:0,1.3e-10,0,0.99999999987"), solver), "");
-  EXPECT_GE(solver.counters().apexFansRelayed, 1u);
-  expectEdgesAgreeAtVertex(solver, 14);
+  const DegeneracyCounters counters =
+      expectCheckedSolveAgreesAtVertex(
+          "face-source-a-hair-from-a-corner-leaves-an-edge-end-to-a-far-window.off",
+          "f:0,1.3e-10,0,0.99999999987", 14)
+          .first;
+  EXPECT_GE(counters.apexFansRelayed, 1u);
 }
 
 // Found by scripts/check-cgal-meshes.sh on 2026-11-27: libcgal-demo's
