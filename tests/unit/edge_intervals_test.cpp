@@ -191,6 +191,30 @@ TEST(Algorithm2, ATieBetweenASourceAndASaddleOnItsLineGoesToTheSourceInEitherOrd
   }
 }
 
+// Inserts `window` and `strip` in both orders. A tie strip stays with the window around it
+// (one interval, the window's, over the whole edge); a strip shorter by more than the tie
+// tolerance is cut out of it (three intervals, the strip's in the middle).
+void expectStripInsideAWindowInEitherOrder(const Interval& window, const Interval& strip,
+                                           bool ties) {
+  for (const bool windowFirst : {true, false}) {
+    SCOPED_TRACE(windowFirst ? "window first" : "strip first");
+    Edge1 e;
+    e.insert(windowFirst ? window : strip);
+    e.insert(windowFirst ? strip : window);
+    expectWellFormed(e.list);
+    if (ties) {
+      ASSERT_EQ(e.list.intervals().size(), 1u);
+      EXPECT_EQ(e.list.intervals()[0].source, window.source);
+      EXPECT_EQ(e.list.intervals()[0].b0, 0.0);
+      EXPECT_EQ(e.list.intervals()[0].b1, kL);
+    } else {
+      ASSERT_EQ(e.list.intervals().size(), 3u);
+      EXPECT_EQ(e.list.intervals()[1].source, strip.source);
+      expectPointwiseMin(e.list, {window, strip}, 0.0, kL);
+    }
+  }
+}
+
 // The same source s and saddle p, but p's window covers the whole edge (the old one, or arriving
 // second) and s's is a strip beside the line s → p (x = 0.5), where the two tie to rounding
 // (tests/data/regression/couplingdown-part-edge-source-leaves-a-gap.off, edge 12-28). Either way
@@ -201,24 +225,54 @@ TEST(Algorithm2, ATieStripInsideAWindowStaysWithThatWindowInEitherOrder) {
   const Vec2 s(0.1, 0.8), p(0.3, 0.4);
   const Interval saddle = make(0.0, kL, p, (p - s).norm());
   for (const double width : {1e-8, 1e-3}) {
-    const Interval direct = make(0.5, 0.5 + width, s, 0.0);
-    for (const bool saddleFirst : {true, false}) {
-      SCOPED_TRACE(std::string(saddleFirst ? "saddle first" : "source first") + ", strip " +
-                   std::to_string(width));
-      Edge1 e;
-      e.insert(saddleFirst ? saddle : direct);
-      e.insert(saddleFirst ? direct : saddle);
-      expectWellFormed(e.list);
-      if (width < 1e-6) {
-        ASSERT_EQ(e.list.intervals().size(), 1u);
-        EXPECT_EQ(e.list.intervals()[0].source, p);
-      } else {
-        ASSERT_EQ(e.list.intervals().size(), 3u);
-        EXPECT_EQ(e.list.intervals()[1].source, s);
-        expectPointwiseMin(e.list, {saddle, direct}, 0.0, kL);
-      }
-    }
+    SCOPED_TRACE("strip " + std::to_string(width));
+    expectStripInsideAWindowInEitherOrder(saddle, make(0.5, 0.5 + width, s, 0.0), width < 1e-6);
   }
+}
+
+// The same with both pseudo-sources on the edge's line: a source s 2 behind the edge's start and
+// the vertex at the start, reached from s straight (σ = 0.5 + 2), whose window covers the edge. The
+// two distances are equal on all of it, so s's strip ties the vertex's window exactly, and the tie
+// is told from the sources' feet on the line instead of a crossing point x*. Either way round the
+// strip stays the vertex's; a strip where s is shorter by 1e-3 is s's (control).
+TEST(Algorithm2, ATieStripOfTwoSourcesOnTheEdgeLineStaysWithTheWindowAroundItInEitherOrder) {
+  const Vec2 s(-2.0, 0.0), vertex(0.0, 0.0);
+  const Interval alongTheEdge = make(0.0, kL, vertex, 2.5);
+  for (const double shorter : {0.0, 1e-3}) {
+    SCOPED_TRACE("s shorter by " + std::to_string(shorter));
+    expectStripInsideAWindowInEitherOrder(alongTheEdge, make(4.0, 4.5, s, 0.5 - shorter),
+                                          shorter == 0.0);
+  }
+}
+
+// A saddle s' 5.7e4 from the edge and a source s 1 behind it on its line to x = 5, σ = σ' − 1 plus
+// the tie tolerance (6.1e-10 there; found by a search over such pairs): on s's strip
+// [5 − 1/128, 5 + 1/128] s is longer than the saddle's window by the tolerance itself, and one ulp
+// of the two distances (7e-12) decides, point by point, between a tie s wins by its smaller σ and
+// a loss. The saddle's window is then cut into several pieces, not one strip; nowhere shorter by
+// more than the tolerance, s gets none of them, and the saddle's window stays whole.
+TEST(Algorithm2, AStripNowhereShorterByMoreThanTheTieToleranceLeavesTheWindowAroundItWhole) {
+  const Vec2 saddleSource(31041.0, 47863.0);
+  const Interval saddle = make(0.0, kL, saddleSource, 4074.0);
+  const Interval strip = make(5.0 - 0.0078125, 5.0 + 0.0078125,
+                              Vec2(31041.544064377402, 47863.839043475178), 4073.000000000618);
+  ASSERT_LT(strip.sigma, saddle.sigma);
+  bool tiesSomewhere = false, losesSomewhere = false;
+  for (int k = 0; k <= 1000; ++k) {
+    const double x = strip.b0 + (strip.b1 - strip.b0) * k / 1000.0;
+    const double f = strip.distanceAt(x), g = saddle.distanceAt(x);
+    ASSERT_GE(f, g - tol::kTieRel * g) << "s is clearly shorter at x = " << x;
+    (f <= g + tol::kTieRel * g ? tiesSomewhere : losesSomewhere) = true;
+  }
+  ASSERT_TRUE(tiesSomewhere && losesSomewhere) << "the rounding does not split the verdict";
+  Edge1 e;
+  e.insert(saddle);
+  e.insert(strip);
+  expectWellFormed(e.list);
+  ASSERT_EQ(e.list.intervals().size(), 1u);
+  EXPECT_EQ(e.list.intervals()[0].source, saddleSource);
+  EXPECT_EQ(e.list.intervals()[0].b0, 0.0);
+  EXPECT_EQ(e.list.intervals()[0].b1, kL);
 }
 
 // Two pseudo-sources on the edge line at or behind its start, the far one reaching the near one
@@ -891,6 +945,40 @@ Interval mirrored(const Interval& w, double edgeLength) {
   return m;
 }
 
+// A list installed as it is, seen from the edge's start or (`mirror`) from its end.
+void assignSeenFrom(Edge1& e, std::vector<Interval> list, bool mirror) {
+  if (mirror) {
+    for (Interval& w : list) w = mirrored(w, kL);
+    std::reverse(list.begin(), list.end());
+  }
+  e.list.assign(list);
+}
+
+// Step 4 counts the edge's ends as neighbours, and the slice an update rewrites takes in one
+// interval beyond those it reaches: a new window reaching only B, the interval after the first, A,
+// sews a gap of ε/2 between the edge's start and A. (No update leaves such a gap, step 6's
+// 'no-tiny-gap', so the list is installed as it is.) From either end of the edge.
+TEST(Algorithm2, AGapBelowEpsilonAtAnEndOfTheEdgeIsSewnByAnUpdateOfTheIntervalBesideTheFirst) {
+  const double gap = 0.5 * tol::kTinyIntervalRel * kL;
+  const Interval a = make(gap, 5.0, Vec2(2.0, 1.0), 0.0), b = make(5.0, kL, Vec2(8.0, 1.0), 0.0),
+                 in = make(6.0, 7.5, Vec2(7.0, 0.1), 0.0);
+  ASSERT_LT(gap, sewLength(a, kL));
+  for (const bool mirror : {false, true}) {
+    SCOPED_TRACE(mirror ? "mirrored" : "as built");
+    const auto side = [&](const Interval& w) { return mirror ? mirrored(w, kL) : w; };
+    Edge1 e;
+    assignSeenFrom(e, {a, b}, mirror);
+    e.insert(side(in));
+    expectWellFormed(e.list);
+    const auto after = e.list.intervals();
+    ASSERT_EQ(after.size(), 4u);
+    EXPECT_EQ(mirror ? after.back().b1 : after.front().b0, mirror ? kL : 0.0) << "the gap is sewn";
+    EXPECT_EQ(e.total[DegeneracyKind::D3], 1u);
+    expectPointwiseMin(e.list, {side(a), side(b), side(in)}, mirror ? 0.0 : gap,
+                       mirror ? kL - gap : kL);
+  }
+}
+
 TEST(Algorithm2, AGapBesideTheUpdateIsSewnWhenTheIntervalNextToItGoesToACoarserWindow) {
   // Near windows A and t with a gap of 2e-10 between them (above ε = 1e-10 of the edge: a real
   // gap), t 1e-9 long and C after it; distances about 1e6 (pseudo-sources reached from far away).
@@ -909,10 +997,8 @@ TEST(Algorithm2, AGapBesideTheUpdateIsSewnWhenTheIntervalNextToItGoesToACoarserW
   for (const bool mirror : {false, true}) {
     SCOPED_TRACE(mirror ? "mirrored" : "as built");
     const auto side = [&](const Interval& w) { return mirror ? mirrored(w, kL) : w; };
-    std::vector<Interval> before{side(a), side(t), side(c)};
-    if (mirror) std::reverse(before.begin(), before.end());
     Edge1 e;
-    e.list.assign(before);
+    assignSeenFrom(e, {a, t, c}, mirror);
     e.insert(side(x));
     expectWellFormed(e.list);
     const auto after = e.list.intervals();

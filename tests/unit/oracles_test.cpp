@@ -331,6 +331,29 @@ TEST(PlanarDomain, AFlatMeshFoldedOntoItselfOrWoundTwiceIsNoEmbeddingOfItsBounda
   EXPECT_TRUE(coversItsDomainOnce(once, planarBoundaryPolygons(once)));
 }
 
+// A flat sheet wound past a full turn about a corner: a fan of four faces about (0, 0), from the
+// spoke to (1, 0) round to the spoke to (1, 1) at 405°, its last face over its first. Every face
+// turns counter-clockwise (area 1/2 each), so the face areas add up to the area its one boundary
+// loop encloses (2), as an embedding's would; what gives it away is the loop crossing itself. Its
+// last spoke, (1, 1) to (0, 0), crosses its first rim edge, (1, 0) to (0, 1), at (1/2, 1/2); its
+// last rim edge, (0, -1) to (1, 1), crosses the first spoke at (1/2, 0) and the first rim edge at
+// (2/3, 1/3). Each crossing is far inside both segments: no end of a loop edge comes within
+// 1/sqrt(5) of an edge it is not next to.
+TEST(PlanarDomain, ASheetWoundPastAFullTurnAboutACornerIsNoEmbeddingOfItsBoundary) {
+  TriangleSoup wound;
+  wound.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, -1, 0}, {1, 1, 0}};
+  wound.faces = {{0, 1, 2}, {0, 2, 3}, {0, 3, 4}, {0, 4, 5}};
+  const auto loops = planarBoundaryPolygons(wound);
+  ASSERT_EQ(loops.size(), 1u);
+  ASSERT_EQ(loops[0].size(), 6u);
+  EXPECT_FALSE(coversItsDomainOnce(wound, loops));
+  // Its first three faces, three quarters of a turn, are one.
+  TriangleSoup threeQuarters = wound;
+  threeQuarters.positions.pop_back();
+  threeQuarters.faces.pop_back();
+  EXPECT_TRUE(coversItsDomainOnce(threeQuarters, planarBoundaryPolygons(threeQuarters)));
+}
+
 // === Bound checks ==============================================================================
 
 struct Fields {
