@@ -300,6 +300,16 @@ Winners findWinners(const Interval& in, const Interval& old, const SampledWinner
   return out;
 }
 
+// Whether a sample of keepShorter's in [lo, hi] has the incoming distance f shorter than the old
+// one g by more than the tie tolerance.
+bool clearlyShorterAtASample(const SampledWinners& sampled, double lo, double hi) {
+  for (int k = 0; k < sampled.numSamples; ++k)
+    if (sampled.sample[k] >= lo && sampled.sample[k] <= hi &&
+        sampled.f[k] < sampled.g[k] - tol::kTieRel * sampled.g[k])
+      return true;
+  return false;
+}
+
 // Whether `in` is nowhere on [lo, hi] shorter than `old` by more than the tie tolerance: where it
 // wins there, it wins by the tie rule only (incomingBeats). The difference of the two distances is
 // monotone on either side of the point x* (findWinners), so its ends, x* and the feet tell.
@@ -307,11 +317,7 @@ bool winsOnlyByTie(const Interval& in, const Interval& old, double lo, double hi
                    const SampledWinners* sampled = nullptr) {
   // A sample of the whole old range inside [lo, hi] where `in` is clearly shorter settles it with
   // no new distance: most pieces `in` wins, it wins by far more than a tie.
-  if (sampled != nullptr)
-    for (int k = 0; k < sampled->numSamples; ++k)
-      if (sampled->sample[k] >= lo && sampled->sample[k] <= hi &&
-          sampled->f[k] < sampled->g[k] - tol::kTieRel * sampled->g[k])
-        return false;
+  if (sampled != nullptr && clearlyShorterAtASample(*sampled, lo, hi)) return false;
   const auto clearlyShorterAt = [&](double x) {
     const double g = old.distanceAt(x);
     return in.distanceAt(x) < g - tol::kTieRel * g;
@@ -331,9 +337,17 @@ bool winsOnlyByTie(const Interval& in, const Interval& old, double lo, double hi
 // winsOnlyByTie on the whole piece keepShorter sampled, from the samples' distances (the same
 // points: its ends, x* or the feet).
 bool winsOnlyByTie(const SampledWinners& sampled) {
-  for (int k = 0; k < sampled.numSamples; ++k)
-    if (sampled.f[k] < sampled.g[k] - tol::kTieRel * sampled.g[k]) return false;
-  return true;
+  constexpr double kAll = std::numeric_limits<double>::infinity();
+  return !clearlyShorterAtASample(sampled, -kAll, kAll);
+}
+
+// Whether old keeps a piece the incoming interval won: by the tie rule only (`onlyByTie`, asked
+// last), with old's function going on before and after it, on the same side of the edge (on the
+// other side its rays go into the other face).
+template <typename OnlyByTie>
+bool tieStripStaysWithOld(const Interval& in, const Interval& old, bool oldBefore, bool oldAfter,
+                          OnlyByTie&& onlyByTie) {
+  return oldBefore && oldAfter && in.side == old.side && onlyByTie();
 }
 
 // A tie strip inside one window: where the incoming interval wins a piece of `old` by the tie rule
@@ -350,12 +364,13 @@ bool winsOnlyByTie(const SampledWinners& sampled) {
 void keepTieStripsInsideOld(Winners& cuts, const Interval& in, const Interval& old,
                             const SampledWinners& sampled, bool oldBefore, bool oldAfter,
                             EdgeUpdateReport& report) {
-  if (in.side != old.side) return;  // (its rays go into the other face)
   bool flipped = false;
   for (int k = 0; k < cuts.m; ++k) {
-    if (!cuts.wins[k] || (k == 0 && !oldBefore) || (k == cuts.m - 1 && !oldAfter)) continue;
-    if (!(cuts.m == 1 ? winsOnlyByTie(sampled)
-                      : winsOnlyByTie(in, old, cuts.cut[k], cuts.cut[k + 1], &sampled)))
+    if (!cuts.wins[k] ||
+        !tieStripStaysWithOld(in, old, k > 0 || oldBefore, k < cuts.m - 1 || oldAfter, [&] {
+          return cuts.m == 1 ? winsOnlyByTie(sampled)
+                             : winsOnlyByTie(in, old, cuts.cut[k], cuts.cut[k + 1], &sampled);
+        }))
       continue;
     cuts.wins[k] = false;
     flipped = true;
@@ -381,7 +396,8 @@ void keepShorter(const Interval& in, const Interval& old, const SampledWinners& 
                  OldPiece&& oldPiece, bool oldBefore, bool oldAfter) {
   if (sampled.uniform()) {
     const bool tieStripKept =
-        sampled.wins[0] && oldBefore && oldAfter && in.side == old.side && winsOnlyByTie(sampled);
+        sampled.wins[0] &&
+        tieStripStaysWithOld(in, old, oldBefore, oldAfter, [&] { return winsOnlyByTie(sampled); });
     if (tieStripKept) ++report.degeneracies.tieStripsKept;
     if (sampled.wins[0] && !tieStripKept) {
       newPiece(old.b0, old.b1);
