@@ -44,6 +44,7 @@ class IntervalPool {
 
  private:
   static int classOf(std::size_t capacity);   // -1 beyond the largest class
+  void faultInUpTo(std::size_t used);
   struct Chunk {
     Interval* data;
     std::size_t capacity;  // intervals
@@ -58,6 +59,7 @@ class IntervalPool {
   std::vector<Chunk> chunks_;                     // each twice the last, up to 3 MB
   std::size_t chunk_ = 0;                         // the chunk being carved
   std::size_t used_ = 0;                          // intervals carved from it
+  std::size_t faultedIn_ = 0;                     // of it, intervals whose pages are faulted in
   std::array<FreeBlock*, kMaxClasses> free_{};    // per size class, the first free block
 };
 
