@@ -113,9 +113,10 @@ Interval* IntervalPool::allocate(std::size_t capacity) {
   return p;
 }
 
-// The kernel's traps at the first write to each new page of a chunk were a tenth of a solve's
-// profile (bunny00 from v:0: 30,000 page faults in the process); with the pages faulted in a
-// window ahead, 8,300, and the solves of the anchor meshes 2–4 % faster (docs/benchmarks.md).
+// The kernel was a tenth of a `geodex distance` profile, mostly traps at the first write to each
+// new page of a chunk (bunny00 from v:0: 30,000 page faults in the process; with the pages
+// faulted in a window ahead, 8,300); the anchor meshes' solves are 2–4 % faster with it
+// (docs/benchmarks.md).
 void IntervalPool::faultInUpTo(std::size_t used) {
   if (used <= faultedIn_) return;
   const Chunk& c = chunks_[chunk_];
