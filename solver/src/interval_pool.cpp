@@ -8,6 +8,7 @@
 
 #if __has_include(<sys/mman.h>)
 #include <sys/mman.h>
+#include <unistd.h>
 #endif
 
 namespace geodex {
@@ -51,7 +52,9 @@ constexpr std::size_t kFaultInAhead = std::size_t{1} << 12;
 // pages fault in as they are written, as before).
 void faultIn(const Interval* begin, const Interval* end) {
 #if defined(MADV_POPULATE_WRITE)
-  constexpr std::uintptr_t kPage = 4096;  // (the smallest page size: a larger one is a multiple)
+  // (The system's page size: with 4 KB assumed, a 16 or 64 KB system refused most calls.)
+  static const auto kPage = static_cast<std::uintptr_t>(sysconf(_SC_PAGESIZE));
+  if (kPage == 0 || (kPage & (kPage - 1)) != 0) return;  // (sysconf failed: -1)
   const std::uintptr_t from = reinterpret_cast<std::uintptr_t>(begin) & ~(kPage - 1);
   const std::uintptr_t to = reinterpret_cast<std::uintptr_t>(end) & ~(kPage - 1);
   // (From the page begin is on, which is mapped, to the last whole page before end: never
