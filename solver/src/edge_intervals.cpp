@@ -205,6 +205,16 @@ bool incomingLosesEverywhere(const Interval& in, std::span<const Interval> reach
   return cursor >= in.b1;
 }
 
+// keepShorter's samples of `old` (cut to the incoming range) against `in`: the scan's, when it
+// sampled this one (`scan` not null), else new ones written to `fresh`. (Referred to, not copied:
+// they are 112 bytes, and most updates have them from the scan.)
+const SampledWinners& samplesOf(const Interval& in, const Interval& old, const ReachedScan* scan,
+                                SampledWinners& fresh, double edgeLength) {
+  if (scan != nullptr) return scan->stop;
+  fresh = sampleWinners(in, old, old.b0, old.b1, edgeLength);
+  return fresh;
+}
+
 // Where steps 1 and 2 write the slice's new intervals and steps 3–5 work on them: a raw pointer and
 // a count over storage the caller sized (piecesBound). Not a vector: writes to the intervals'
 // one-byte fields may alias anything, which made every push_back reload the vector's own pointers
@@ -611,12 +621,10 @@ void splitAndKeepShorter(std::span<const Interval> slice, std::size_t firstReach
       if (reachedIndex < scan.lostPrefix) {
         out.push(w);
       } else {
-        // (The scan's samples by reference, not copied: 112 bytes.)
         SampledWinners fresh;
         const bool scanned = reachedIndex == scan.lostPrefix && scan.stopSampled;
-        if (!scanned) fresh = sampleWinners(in, w, w.b0, w.b1, edgeLength);
-        keepShorter(in, w, scanned ? scan.stop : fresh, edgeLength, report, out, newPiece, oldPiece,
-                    before.b0 < w.b0, hasRight);
+        keepShorter(in, w, samplesOf(in, w, scanned ? &scan : nullptr, fresh, edgeLength),
+                    edgeLength, report, out, newPiece, oldPiece, before.b0 < w.b0, hasRight);
       }
     }
     if (hasRight) {  // 1.4's right piece
@@ -1085,10 +1093,9 @@ bool updateOneReached(IntervalList& list, std::size_t j, const Interval& incomin
   if (scan.lostPrefix > 0) {
     pieces.addOld(inside, inside.b0, inside.b1, minX, minAt);
   } else {
-    // (A reference to the scan's samples, not a copy of them: 112 bytes an update.)
     SampledWinners fresh;
-    if (!scan.stopSampled) fresh = sampleWinners(in, inside, inside.b0, inside.b1, edgeLength);
-    const SampledWinners& sampled = scan.stopSampled ? scan.stop : fresh;
+    const SampledWinners& sampled =
+        samplesOf(in, inside, scan.stopSampled ? &scan : nullptr, fresh, edgeLength);
     Winners cuts = findWinners(in, inside, sampled, edgeLength, report);
     keepTieStripsInsideOld(cuts, in, inside, sampled, w.b0<in.b0, w.b1> in.b1, report);
     for (int k = 0; k < cuts.m; ++k) {
@@ -1111,10 +1118,10 @@ bool updateOneReached(IntervalList& list, std::size_t j, const Interval& incomin
   if (pieces.anyNew()) largestScale = std::max(largestScale, intervalLengthScale(in, edgeLength));
   double shortest = std::min(edgeLength, pieces.shortest());
   // (The four neighbours written out: a loop over j - 2 .. j + 2 that skipped j cost 1.6 % more of
-  // the icosphere's solve instructions. largestScale is at least edgeLength already, the other
-  // term of intervalLengthScale.)
+  // the icosphere's solve instructions. largestScale, at least the edge length already, stands in
+  // for it: max(largestScale, intervalLengthScale(v, edgeLength)) cost 0.1 % more of them.)
   const auto widen = [&](const Interval& v) {
-    largestScale = std::max(largestScale, std::abs(v.source.x()) + v.source.y());
+    largestScale = intervalLengthScale(v, largestScale);
   };
   if (prev != nullptr) {
     widen(*prev);

@@ -847,6 +847,31 @@ TEST(Algorithm2, SameSourceArrivingAgainKeepsTheOldAndItsPropagation) {
   EXPECT_TRUE(e.toQueue().empty());
 }
 
+TEST(Algorithm2, SameSourceReachedAloneInsideALongerIncomingRangeIsKept) {
+  // The one old interval the incoming one reaches has its source (σ 5e-11 apart, within
+  // kSameSourceRel) and lies inside its range, so the scan stops at the gap before it without
+  // asking whether the sources are the same. The one-interval update must ask, or it takes the
+  // incoming σ as 5e-11 shorter there and drops the propagated old interval; Algorithm 2 keeps
+  // the old one and gives the incoming one the gaps on either side.
+  Edge1 e;
+  Interval old = make(3.0, 7.0, Vec2(5.0, 2.0), 1.0);
+  old.markPropagated();
+  e.list.assign(std::vector<Interval>{old});
+  const Interval in = make(2.0, 8.0, Vec2(5.0, 2.0), 1.0 - 5e-11);
+  e.insert(in);
+  expectWellFormed(e.list);
+  const auto w = e.list.intervals();
+  ASSERT_EQ(w.size(), 3u);
+  EXPECT_EQ(w[0].b0, 2.0);
+  EXPECT_EQ(w[1].b0, 3.0);
+  EXPECT_EQ(w[1].b1, 7.0);
+  EXPECT_EQ(w[1].sigma, old.sigma);
+  EXPECT_TRUE(w[1].fullyPropagated());
+  EXPECT_EQ(w[2].b1, 8.0);
+  EXPECT_EQ(w[0].sigma, in.sigma);
+  EXPECT_EQ(w[2].sigma, in.sigma);
+}
+
 TEST(Algorithm2, APendingIntervalTrimmedAwayFromItsNearestPointKeepsItsQueueEntry) {
   // A pending interval's queue key is its smallest distance, which a trim elsewhere leaves where
   // it was (the distance along an edge is convex): the solver keeps its entry and queues only
