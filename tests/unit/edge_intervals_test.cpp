@@ -872,6 +872,55 @@ TEST(Algorithm2, SameSourceReachedAloneInsideALongerIncomingRangeIsKept) {
   EXPECT_EQ(w[2].sigma, in.sigma);
 }
 
+TEST(Algorithm2, AnUpdateOfOneIntervalJoinsTheIncomingPieceToItsSameSourceNeighbour) {
+  // The incoming interval reaches only b, and wins next to a, which has its source: step 5 joins
+  // the two (both pending), whichever path the update takes. Without step 5 the list would keep
+  // one geodesic as two intervals, and propagate it twice.
+  Edge1 e;
+  const Vec2 s(2.0, 1.0);
+  const Interval a = make(0.0, 4.0, s, 0.0);
+  const Interval b = make(4.0, kL, Vec2(9.0, 3.0), 2.0);
+  const Interval in = make(4.0, 8.0, s, 0.0);
+  ASSERT_LT(in.distanceAt(4.0), b.distanceAt(4.0));
+  ASSERT_GT(in.distanceAt(8.0), b.distanceAt(8.0));
+  e.insert(a);
+  e.insert(b);
+  e.insert(in);
+  expectWellFormed(e.list);
+  const auto w = e.list.intervals();
+  ASSERT_EQ(w.size(), 2u);
+  EXPECT_EQ(w[0].b0, 0.0);
+  EXPECT_EQ(w[0].source, s);
+  EXPECT_GT(w[0].b1, 4.0);
+  EXPECT_EQ(w[1].source, b.source);
+  expectPointwiseMin(e.list, {a, b, in}, 0.0, kL);
+}
+
+TEST(Algorithm2, AnUpdateOfOneIntervalRemovesASliverOfAFarSourceBesideIt) {
+  // The incoming interval reaches only w; w's neighbour p1 is 5e-8 long, its source 1e4 away
+  // (its ε 1e-7), between windows of sources within the edge's length (ε 1e-10). Step 3 over
+  // the update's slice, which holds p1, removes it into a neighbour, whichever path the update
+  // takes: the bound that decides whether the one-interval path may skip step 3 must take in
+  // the neighbours' scales, not only those of w and the incoming interval. (Set as a list.)
+  Edge1 e;
+  const double sliverEnd = 3.0 + 5e-8;
+  const Interval p1 = make(3.0, sliverEnd, Vec2(-1e4, 1.0), 0.0);
+  const Vec2 s2(2.0, 1.0), sw(6.0, 1.0);
+  const Interval p2 = make(0.0, 3.0, s2, p1.distanceAt(3.0) - (Vec2(3.0, 0.0) - s2).norm());
+  const Interval w =
+      make(sliverEnd, kL, sw, p1.distanceAt(sliverEnd) - (Vec2(sliverEnd, 0.0) - sw).norm());
+  ASSERT_LT(p1.length(), tinyLength(p1, kL));
+  ASSERT_GT(p1.length(), 100.0 * tinyLength(w, kL));
+  e.list.assign(std::vector<Interval>{p2, p1, w});
+  const Interval in = make(5.0, kL, Vec2(8.0, 1.0), w.sigma - 1.0);
+  e.insert(in);
+  expectWellFormed(e.list);
+  for (const Interval& v : e.list.intervals())
+    EXPECT_NE(v.source, p1.source) << "the sliver is left at [" << v.b0 << ", " << v.b1 << "]";
+  EXPECT_EQ(e.total[DegeneracyKind::D1], 1u);
+  expectPointwiseMin(e.list, {p2, p1, w, in}, 0.0, kL);
+}
+
 TEST(Algorithm2, APendingIntervalTrimmedAwayFromItsNearestPointKeepsItsQueueEntry) {
   // A pending interval's queue key is its smallest distance, which a trim elsewhere leaves where
   // it was (the distance along an edge is convex): the solver keeps its entry and queues only
