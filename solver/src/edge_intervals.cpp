@@ -172,6 +172,9 @@ struct ReachedScan {
   // far): updateOneReached then need not ask again.
   bool firstPlain = false;
   SampledWinners stop;
+  // Whether `stop` holds the samples of the reached interval at `reachedIndex`: the scan stopped
+  // there having sampled it.
+  bool sampled(std::size_t reachedIndex) const { return stopSampled && reachedIndex == lostPrefix; }
 };
 
 // Whether the old intervals `reached` leave the incoming interval nothing: they cover its whole
@@ -205,12 +208,13 @@ bool incomingLosesEverywhere(const Interval& in, std::span<const Interval> reach
   return cursor >= in.b1;
 }
 
-// keepShorter's samples of `old` (cut to the incoming range) against `in`: the scan's, when it
-// sampled this one (`scan` not null), else new ones written to `fresh`. (Referred to, not copied:
-// they are 112 bytes, and most updates have them from the scan.)
-const SampledWinners& samplesOf(const Interval& in, const Interval& old, const ReachedScan* scan,
-                                SampledWinners& fresh, double edgeLength) {
-  if (scan != nullptr) return scan->stop;
+// keepShorter's samples of `old`, the reached interval at `reachedIndex` (cut to the incoming
+// range), against `in`: the scan's, when it sampled this one, else new ones written to `fresh`.
+// (Referred to, not copied: they are 112 bytes, and most updates have them from the scan.)
+const SampledWinners& samplesOf(const Interval& in, const Interval& old, const ReachedScan& scan,
+                                std::size_t reachedIndex, SampledWinners& fresh,
+                                double edgeLength) {
+  if (scan.sampled(reachedIndex)) return scan.stop;
   fresh = sampleWinners(in, old, old.b0, old.b1, edgeLength);
   return fresh;
 }
@@ -622,9 +626,8 @@ void splitAndKeepShorter(std::span<const Interval> slice, std::size_t firstReach
         out.push(w);
       } else {
         SampledWinners fresh;
-        const bool scanned = reachedIndex == scan.lostPrefix && scan.stopSampled;
-        keepShorter(in, w, samplesOf(in, w, scanned ? &scan : nullptr, fresh, edgeLength),
-                    edgeLength, report, out, newPiece, oldPiece, before.b0 < w.b0, hasRight);
+        keepShorter(in, w, samplesOf(in, w, scan, reachedIndex, fresh, edgeLength), edgeLength,
+                    report, out, newPiece, oldPiece, before.b0 < w.b0, hasRight);
       }
     }
     if (hasRight) {  // 1.4's right piece
@@ -1094,8 +1097,7 @@ bool updateOneReached(IntervalList& list, std::size_t j, const Interval& incomin
     pieces.addOld(inside, inside.b0, inside.b1, minX, minAt);
   } else {
     SampledWinners fresh;
-    const SampledWinners& sampled =
-        samplesOf(in, inside, scan.stopSampled ? &scan : nullptr, fresh, edgeLength);
+    const SampledWinners& sampled = samplesOf(in, inside, scan, 0, fresh, edgeLength);
     Winners cuts = findWinners(in, inside, sampled, edgeLength, report);
     keepTieStripsInsideOld(cuts, in, inside, sampled, w.b0<in.b0, w.b1> in.b1, report);
     for (int k = 0; k < cuts.m; ++k) {
