@@ -72,10 +72,15 @@ void writeStats(std::ostream& err, const GeodesicSolver& solver, double loadSeco
   put("intervals created:", std::to_string(s.intervalsCreated));
   put("windows propagated:", std::to_string(s.intervalsPropagated));
   put("pseudo-source events:", std::to_string(s.pseudoSourceEvents));
-  put("max intervals/edge:", std::to_string(s.maxIntervalsPerEdge));
-  put("intervals at end:", std::to_string(s.intervalsAtEnd));
+  // (After a solve that released lists, of the lists it kept: the wavefront's last stretch.)
+  const std::string ofKept = s.edgesReleased > 0 ? " (in the lists not released)" : "";
+  put("max intervals/edge:", std::to_string(s.maxIntervalsPerEdge) + ofKept);
+  put("intervals at end:", std::to_string(s.intervalsAtEnd) + ofKept);
   put("shadows closed:", std::to_string(s.shadowsClosed));
   put("dropped at edge end:", std::to_string(s.windowsDroppedAtEdgeEnd));
+  put("lists released:",
+      std::to_string(s.edgesReleased) +
+          (s.releaseUndone ? " (solved again keeping them: a window reached one)" : ""));
   for (std::size_t i = 0; i < targets.size(); ++i) {
     err << "target " << targetSpecs[i] << ": " << formatDistance(solver.distance(targets[i]))
         << '\n';
@@ -109,6 +114,7 @@ int runDistance(const DistanceOptions& o) {
   SolveOptions options;
   options.stopDistance = o.stopDistance;
   options.targets = targets;
+  options.vertexDistancesOnly = true;  // (the solver keeps the lists when targets need them)
   const auto solveStart = std::chrono::steady_clock::now();
   solver.solve(sources, options);
   const double solveSeconds = secondsSince(solveStart);

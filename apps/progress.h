@@ -27,6 +27,7 @@ class ProgressReporter : public SolverObserver {
 
   void onPropagation(const PropagationEvent& event) override;
   void onFinish(const GeodesicSolver& solver) override;
+  bool readsIntervalLists() const override { return false; }
 
  private:
   using Clock = std::chrono::steady_clock;

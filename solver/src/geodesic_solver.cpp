@@ -70,6 +70,9 @@ void GeodesicSolver::reset() {
   queue_.reset(queueBucketWidth_, mesh_.numEdges());  // a ring of at most one bucket per edge
   counters_ = {};
   stats_ = {};
+  releasing_ = false;
+  releaseBroken_ = false;
+  listsComplete_ = true;
 }
 
 // ===  Solve ======================================================================================
@@ -86,11 +89,28 @@ void GeodesicSolver::solve(std::span<const SurfacePoint> sources, const SolveOpt
   for (const SurfacePoint& p : sources) resolvedSources.push_back(resolve(mesh_, p));
   for (const SurfacePoint& p : options.targets) targets.push_back(resolve(mesh_, p));
 
-  reset();
-  sources_ = std::move(resolvedSources);
-  for (std::size_t i = 0; i < sources_.size(); ++i) seedSource(sources_[i], i);
-
+  // Lists are released only where nothing will read them: not for targets (their distances are
+  // read from the lists during the solve) nor for an observer that reads them.
+  const bool release = options.vertexDistancesOnly && targets.empty() &&
+                       !(hooked() && observer_->readsIntervalLists());
   double radius = kInfinity;
+  bool undone = false;
+  for (bool releasing = release;; releasing = false) {
+    reset();
+    if (releasing) startReleasing();
+    sources_ = resolvedSources;
+    for (std::size_t i = 0; i < sources_.size(); ++i) seedSource(sources_[i], i);
+    if (runWavefront(inMeshUnits, targets, radius)) break;
+    undone = true;
+  }
+  stats_.releaseUndone = undone;
+  listsComplete_ = stats_.edgesReleased == 0;
+  finish(inMeshUnits, radius);
+}
+
+bool GeodesicSolver::runWavefront(const SolveOptions& inMeshUnits,
+                                  std::span<const ResolvedPoint> targets, double& radius) {
+  radius = kInfinity;
   std::uint64_t pops = 0;
   // The largest distance of the targets, looked at again every `targets.size()` pops (one target
   // a pop, amortized): a solve for a target near the source stops near it, not 256 pops later.
@@ -119,14 +139,17 @@ void GeodesicSolver::solve(std::span<const SurfacePoint> sources, const SolveOpt
     }
     queue_.pop();
     ++pops;
+    if (releasing_) releasePassedEdges(bound);
     if (top.key > inMeshUnits.stopDistance) continue;  // beyond the stop, in the last bucket
     if (top.edge == kNoIndex) {  // a pseudo-source event; stale if the vertex improved since
       if (top.key == vertexDistance_[top.which]) {
         createPseudoSourceWindows(top.which, top.key, static_cast<std::int32_t>(top.which));
+        if (releaseBroken_) return false;
       }
       continue;
     }
     propagateEdgeSide(top, std::min(top.key + batchSlack_, inMeshUnits.stopDistance));
+    if (releaseBroken_) return false;
 #if defined(GEODEX_FUZZING_BUILD_MODE)
     // The fuzzing switch: a wavefront that runs away on a fuzzer's mesh (≤ 64 faces) is reported
     // at once as a bug, not minutes later as a timeout.
@@ -136,7 +159,7 @@ void GeodesicSolver::solve(std::span<const SurfacePoint> sources, const SolveOpt
                        << " faces");
 #endif
   }
-  finish(inMeshUnits, radius);
+  return true;
 }
 
 void GeodesicSolver::seedSource(const ResolvedPoint& p, std::size_t number) {
@@ -465,8 +488,102 @@ void GeodesicSolver::prefetchAhead() const {
   }
 }
 
+// ===  Releasing the lists the wavefront has left behind ==========================================
+// For a solve asked for vertex distances only. Measured from vertex 0, the edges that still hold a
+// pending window or are within four batch slacks of the queue's front carry at their most 6–8 %
+// of all intervals on bunny00, armadillo and the icosphere (docs/benchmarks.md, "Releasing the
+// lists the wavefront has left behind"): the rest is the wake, which no update reaches again but
+// the lists kept. Exactness does not rest on that: an edge is released only with nothing pending on
+// it, and a window that reaches a released edge after all (a vertex relaying its fan long after
+// it was reached, a window re-propagated behind the front) makes the solve start again keeping
+// every list. A solve that completes released only lists no update read or wrote afterwards, so
+// its vertex distances are those of the solve that keeps them, to the bit.
+
+// How far behind the queue's lower bound an edge's reach must be before its list goes, in median
+// edge lengths: four batch slacks. (Of the 157 libcgal-demo and regression meshes from vertex 0,
+// three start again at that distance: couplingdown, pinion and pinion_small.)
+constexpr double kReleaseSlackEdges = 4.0;
+
+void GeodesicSolver::startReleasing() {
+  releasing_ = true;
+  releaseState_.assign(mesh_.numEdges(), 0);
+  releaseBuckets_.clear();
+  nextReleaseBucket_ = 0;
+}
+
+// w arrives on `edge`: the edge waits in the bucket of w's reach (its distance at b0 plus its
+// length bounds its distance on [b0, b1]: it grows at slope at most 1), unless it waits in a later
+// one already. A reach not yet passed is all this has to get right to save memory; exactness
+// does not depend on it.
+void GeodesicSolver::fileForRelease(Index edge, const Interval& w) {
+  std::uint32_t& state = releaseState_[edge];
+  if (state == kKept) return;
+  const double reach = (w.distanceAt(w.b0) + w.length()) / queueBucketWidth_;
+  if (state != 0 && reach < static_cast<double>(state)) return;  // waits in a later bucket
+  fileInBucket(edge, reach);
+}
+
+// Files `edge` in the bucket of `reach` (in bucket widths) or, when the wavefront's release has
+// passed that one, in the next it will look at. At most four buckets an edge (the queue's ring
+// has one): an edge reaching beyond is kept rather than the bucket array grown for a few far
+// windows.
+void GeodesicSolver::fileInBucket(Index edge, double reach) {
+  std::uint32_t& state = releaseState_[edge];
+  const double buckets = 4.0 * static_cast<double>(mesh_.numEdges()) + 64.0;
+  if (!(reach < buckets)) {
+    state = kKept;
+    return;
+  }
+  const std::size_t k = std::max(static_cast<std::size_t>(reach), nextReleaseBucket_);
+  state = static_cast<std::uint32_t>(k + 1);
+  if (k >= releaseBuckets_.size()) releaseBuckets_.resize(k + 1);
+  releaseBuckets_[k].push_back(edge);
+}
+
+// Releases the lists of the edges filed in buckets the wavefront has passed by the slack, those
+// with a pending window excepted (filed again where the wavefront is now).
+void GeodesicSolver::releasePassedEdges(double bound) {
+  if (!(bound < kInfinity)) return;
+  const double slack = queueBucketWidth_ * (kReleaseSlackEdges / kQueueBucketEdges);
+  while (nextReleaseBucket_ < releaseBuckets_.size() &&
+         static_cast<double>(nextReleaseBucket_ + 1) * queueBucketWidth_ + slack <= bound) {
+    std::vector<Index> edges;
+    edges.swap(releaseBuckets_[nextReleaseBucket_]);  // (its memory goes with it)
+    const std::size_t k = nextReleaseBucket_++;
+    for (const Index e : edges) {
+      std::uint32_t& state = releaseState_[e];
+      if (state != k + 1) continue;  // filed again later, released or kept
+      if (pendingKey_[2 * std::size_t{e}] != kInfinity ||
+          pendingKey_[2 * std::size_t{e} + 1] != kInfinity) {
+        fileInBucket(e, bound / queueBucketWidth_);  // to be looked at again from here
+        continue;
+      }
+      edges_[e].clearAndRelease();
+      state = kReleased;
+      ++stats_.edgesReleased;
+    }
+  }
+}
+
+void GeodesicSolver::requireAllLists(const char* what) const {
+  GEODEX_REQUIRE(listsComplete_, what << " needs the interval lists, which the last solve "
+                                         "released (SolveOptions::vertexDistancesOnly)");
+}
+
+std::span<const EdgeIntervals> GeodesicSolver::edgeIntervals() const {
+  requireAllLists("edgeIntervals()");
+  return edges_;
+}
+
 // ===  Edge updates and vertex distances ==========================================================
 void GeodesicSolver::addInterval(Index edge, const Interval& w, const Fig6Branch* branch) {
+  if (releasing_) {
+    if (releaseState_[edge] == kReleased) [[unlikely]] {
+      releaseBroken_ = true;  // the solve starts again keeping every list
+      return;
+    }
+    fileForRelease(edge, w);
+  }
   ++stats_.intervalsCreated;
   const double length = mesh_.edge(edge).length;
   EdgeIntervals& list = edges_[edge];
@@ -623,6 +740,8 @@ void GeodesicSolver::throwDistanceOverflow(double d, Index vertex) const {
 }
 
 double GeodesicSolver::resolvedDistance(const ResolvedPoint& p) const {
+  if (p.kind != SurfacePoint::Kind::Vertex)
+    requireAllLists("the distance at an edge or face point");
   double best = kInfinity;
   switch (p.kind) {
     case SurfacePoint::Kind::Vertex:
@@ -679,7 +798,9 @@ double GeodesicSolver::targetsMaxDistance(std::span<const ResolvedPoint> targets
 std::vector<double> exactGeodesicDistance(const Mesh& mesh, std::span<const SurfacePoint> sources,
                                           const SolveOptions& options) {
   GeodesicSolver solver(mesh);
-  solver.solve(sources, options);
+  SolveOptions vertexOnly = options;  // nothing else is read from this solver
+  vertexOnly.vertexDistancesOnly = true;
+  solver.solve(sources, vertexOnly);
   const auto d = solver.vertexDistances();
   return {d.begin(), d.end()};
 }

@@ -265,6 +265,7 @@ class Tracer {
 }  // namespace
 
 GeodesicPath GeodesicSolver::path(const SurfacePoint& target) const {
+  requireAllLists("path()");
   const ResolvedPoint start = resolve(mesh_, target);
   GeodesicPath result;
   if (!std::isfinite(resolvedDistance(start))) return result;

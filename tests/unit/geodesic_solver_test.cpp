@@ -794,5 +794,119 @@ TEST(SolverApi, APointSpecWithANumberOutOfRangeIsRefused) {
   EXPECT_EQ(parseSurfacePoint("e:0,1,0.25").t, 0.25);
 }
 
+// ===  Vertex distances only: the lists behind the wavefront released ===========================
+
+std::vector<double> vertexDistancesOf(const GeodesicSolver& solver) {
+  const auto d = solver.vertexDistances();
+  return {d.begin(), d.end()};
+}
+
+// The released solve must give the vertex distances of the solve that keeps every list, to the
+// bit (nothing it released was read or written again), on meshes where the wavefront leaves a
+// wake: most edges' lists go.
+TEST(VertexDistancesOnly, GivesTheDistancesOfTheSolveThatKeepsTheListsToTheBit) {
+  const std::vector<std::pair<std::string, TriangleSoup>> meshes = {
+      {"icosphere-4", verify::icosphereMesh(4, 1.0)},
+      {"bumpy-40", verify::bumpyHeightField(40, 40, 0.3, 7)},
+      {"square-with-hole", verify::squareWithHoleMesh(24, 1.0, 0.4)},
+  };
+  for (const auto& [name, soup] : meshes) {
+    const Mesh mesh(soup);
+    for (const SurfacePoint& source : vertexEdgeFaceSources(soup)) {
+      GeodesicSolver kept(mesh), released(mesh);
+      kept.solve({&source, 1});
+      SolveOptions vertexOnly;
+      vertexOnly.vertexDistancesOnly = true;
+      released.solve({&source, 1}, vertexOnly);
+      EXPECT_EQ(vertexDistancesOf(released), vertexDistancesOf(kept)) << name;
+      EXPECT_EQ(kept.stats().edgesReleased, 0u) << name;
+      // Most of the mesh lies behind the wavefront at the end; a release that never happens
+      // would pass the comparison above without testing anything.
+      EXPECT_GT(released.stats().edgesReleased, mesh.numEdges() / 2) << name;
+      EXPECT_FALSE(released.stats().releaseUndone) << name;
+    }
+  }
+}
+
+// From vertex 0 of libcgal-demo's pinion_small.off a window reaches an edge whose list was
+// released (one of three such meshes among the 157 libcgal-demo and regression meshes): the solve
+// is done again keeping every list, and its distances are those of the solve that always kept
+// them.
+TEST(VertexDistancesOnly, AWindowReachingAReleasedEdgeMakesTheSolveStartAgainKeepingTheLists) {
+  const std::filesystem::path path =
+      std::filesystem::path(GEODEX_CGAL_MESH_DIR) / "pinion_small.off";
+  if (!std::filesystem::exists(path)) GTEST_SKIP() << path << " is absent";
+  const Mesh mesh(readMesh(path.string()).soup);
+  const SurfacePoint source = SurfacePoint::atVertex(0);
+  GeodesicSolver kept(mesh), released(mesh);
+  kept.solve({&source, 1});
+  SolveOptions vertexOnly;
+  vertexOnly.vertexDistancesOnly = true;
+  released.solve({&source, 1}, vertexOnly);
+  EXPECT_TRUE(released.stats().releaseUndone);
+  EXPECT_EQ(released.stats().edgesReleased, 0u);  // the second solve's: it released nothing
+  EXPECT_EQ(vertexDistancesOf(released), vertexDistancesOf(kept));
+  EXPECT_NO_THROW(static_cast<void>(released.edgeIntervals()));  // every list is there
+}
+
+TEST(VertexDistancesOnly, WhatReadsTheListsRefusesAfterARelease) {
+  const TriangleSoup soup = verify::icosphereMesh(3, 1.0);
+  const Mesh mesh(soup);
+  GeodesicSolver solver(mesh);
+  SolveOptions vertexOnly;
+  vertexOnly.vertexDistancesOnly = true;
+  const SurfacePoint source = SurfacePoint::atVertex(0);
+  solver.solve({&source, 1}, vertexOnly);
+  ASSERT_GT(solver.stats().edgesReleased, 0u);
+  EXPECT_EQ(solver.distance(SurfacePoint::atVertex(5)), solver.vertexDistances()[5]);
+  const auto& f = soup.faces[3];
+  EXPECT_THROW(static_cast<void>(solver.distance(SurfacePoint::onEdge(f[0], f[1], 0.5))),
+               std::logic_error);
+  EXPECT_THROW(static_cast<void>(solver.distance(SurfacePoint::inFace(3, 0.2, 0.3, 0.5))),
+               std::logic_error);
+  EXPECT_THROW(static_cast<void>(solver.path(SurfacePoint::atVertex(5))), std::logic_error);
+  EXPECT_THROW(static_cast<void>(solver.edgeIntervals()), std::logic_error);
+  // A solve that keeps the lists answers again.
+  solver.solve({&source, 1});
+  EXPECT_NO_THROW(static_cast<void>(solver.path(SurfacePoint::atVertex(5))));
+}
+
+// The switch is ignored where the lists are read: for targets (their distances come from the
+// lists during the solve) and for an observer that reads them (the checkers); an observer that
+// says it does not (the CLI's progress line) leaves it on.
+TEST(VertexDistancesOnly, KeepsTheListsForTargetsAndForObserversThatReadThem) {
+  const Mesh mesh(verify::icosphereMesh(3, 1.0));
+  const SurfacePoint source = SurfacePoint::atVertex(0);
+  SolveOptions vertexOnly;
+  vertexOnly.vertexDistancesOnly = true;
+  {
+    GeodesicSolver solver(mesh);
+    SolveOptions withTarget = vertexOnly;
+    withTarget.targets = {SurfacePoint::atVertex(7)};
+    solver.solve({&source, 1}, withTarget);
+    EXPECT_EQ(solver.stats().edgesReleased, 0u);
+  }
+  {
+    GeodesicSolver solver(mesh);
+    verify::InvariantChecker checker(verify::CheckLevel::Full, /*throwOnViolation=*/false);
+    solver.setObserver(&checker);
+    solver.solve({&source, 1}, vertexOnly);
+    EXPECT_EQ(solver.stats().edgesReleased, 0u);
+    EXPECT_EQ(checker.firstViolation(), nullptr);
+  }
+  {
+    struct Counting : SolverObserver {
+      std::size_t propagations = 0;
+      void onPropagation(const PropagationEvent&) override { ++propagations; }
+      bool readsIntervalLists() const override { return false; }
+    } counting;
+    GeodesicSolver solver(mesh);
+    solver.setObserver(&counting);
+    solver.solve({&source, 1}, vertexOnly);
+    EXPECT_GT(solver.stats().edgesReleased, 0u);
+    EXPECT_EQ(counting.propagations, solver.stats().intervalsPropagated);
+  }
+}
+
 }  // namespace
 }  // namespace geodex

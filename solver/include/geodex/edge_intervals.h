@@ -184,6 +184,8 @@ class EdgeIntervals {
   std::span<Interval> intervals() { return list_; }
   bool empty() const { return list_.empty(); }
   void clear() { list_.clear(); }
+  /// Empties the list and hands its memory back (to the pool it was allocated from).
+  void clearAndRelease() { list_.clearAndRelease(); }
   /// For tests and the fuzzers: install a list as it is (no checks; verify/ judges it).
   void assign(const std::vector<Interval>& list) { list_.assign(list); }
 

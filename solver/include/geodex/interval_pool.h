@@ -94,6 +94,8 @@ class IntervalList {
   operator std::span<const Interval>() const { return {data_, size_}; }  // NOLINT: a view
 
   void clear() { size_ = 0; }
+  /// Empties the list and hands its block back to the pool.
+  void clearAndRelease() { release(); }
   /// The list becomes a copy of `list` (which must not be part of it).
   void assign(std::span<const Interval> list);
   /// Replaces the intervals [s0, s1) by `with` (which must not be part of the list), moving the

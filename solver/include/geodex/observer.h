@@ -55,6 +55,11 @@ class SolverObserver {
   virtual void onWindowDropped(const WindowDroppedEvent&) {}
   /// After the wavefront is exhausted (or stopped); the solver's results are queryable.
   virtual void onFinish(const GeodesicSolver&) {}
+  /// Whether the observer reads edges' interval lists (in events or through the solver): then a
+  /// solve asked for vertex distances only keeps every list (SolveOptions::vertexDistancesOnly).
+  /// One that does not may see the events of such a solve that starts again (SolveStats::
+  /// releaseUndone) before those of the solve that finishes.
+  virtual bool readsIntervalLists() const { return true; }
 };
 
 }  // namespace geodex

@@ -401,6 +401,34 @@ bool checkTargets(const SolvedCase& s, Verdict& v) {
   return true;
 }
 
+/// A solve for vertex distances only, which releases the lists behind the wavefront (and starts
+/// again keeping them should a window reach a released one), gives the vertex distances of the
+/// solve that keeps them, to the bit (SolveOptions::vertexDistancesOnly).
+bool checkVertexDistancesOnly(const SolvedCase& s, Verdict& v) {
+  GeodesicSolver released(s.mesh);  // no observer: one that reads the lists would keep them
+  SolveOptions options;
+  options.vertexDistancesOnly = true;
+  try {
+    released.solve(s.c.sources, options);
+  } catch (const std::exception& e) {
+    return fail(v, "vertex-distances-only",
+                std::string("the solve threw: ") + e.what() + s.where()),
+           false;
+  }
+  const auto kept = s.solver.vertexDistancesInMeshUnits();
+  const auto got = released.vertexDistancesInMeshUnits();
+  for (Index x = 0; x < kept.size(); ++x) {
+    if (!(got[x] == kept[x] || (std::isnan(got[x]) && std::isnan(kept[x]))))
+      return fail(v, "vertex-distances-only",
+                  "vertex " + std::to_string(x) + " at " + fmt(kept[x]) + " gets " + fmt(got[x]) +
+                      " from the solve that released " +
+                      std::to_string(released.stats().edgesReleased) + " lists" +
+                      (released.stats().releaseUndone ? " (and started again)" : "") + s.where()),
+             false;
+  }
+  return true;
+}
+
 /// When asked, d(a, b) = d(b, a) for a single vertex source a and the farthest vertex b.
 bool checkSymmetricDistance(const SolvedCase& s, Index farthest, Verdict& v) {
   const SolverCase& c = s.c;
@@ -458,6 +486,7 @@ Verdict checkSolverWith(const SolverCase& c, const PlantedError* planted) {
   if (!checkTracedPath(s, farthest, v)) return v;
   if (!checkStopDistance(s, v)) return v;
   if (!checkTargets(s, v)) return v;
+  if (!checkVertexDistancesOnly(s, v)) return v;
   checkSymmetricDistance(s, farthest, v);
   return v;
 }
