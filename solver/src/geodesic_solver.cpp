@@ -72,7 +72,6 @@ void GeodesicSolver::reset() {
   stats_ = {};
   releasing_ = false;
   releaseBroken_ = false;
-  listsComplete_ = true;
 }
 
 // ===  Solve ======================================================================================
@@ -104,7 +103,6 @@ void GeodesicSolver::solve(std::span<const SurfacePoint> sources, const SolveOpt
     undone = true;
   }
   stats_.releaseUndone = undone;
-  listsComplete_ = stats_.edgesReleased == 0;
   finish(inMeshUnits, radius);
 }
 
@@ -566,8 +564,9 @@ void GeodesicSolver::releasePassedEdges(double bound) {
 }
 
 void GeodesicSolver::requireAllLists(const char* what) const {
-  GEODEX_REQUIRE(listsComplete_, what << " needs the interval lists, which the last solve "
-                                         "released (SolveOptions::vertexDistancesOnly)");
+  GEODEX_REQUIRE(stats_.edgesReleased == 0,
+                 what << " needs the interval lists, which the last solve "
+                         "released (SolveOptions::vertexDistancesOnly)");
 }
 
 std::span<const EdgeIntervals> GeodesicSolver::edgeIntervals() const {

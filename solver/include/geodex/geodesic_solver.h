@@ -197,7 +197,6 @@ class GeodesicSolver {
   // windows they received reach, for the wavefront to leave them behind (releasePassedEdges).
   bool releasing_ = false;      // this attempt releases lists
   bool releaseBroken_ = false;  // a window reached a released edge
-  bool listsComplete_ = true;   // no list of the last solve was released
   /// Per edge: 0 not filed, k + 1 filed in bucket k, or one of the two below.
   std::vector<std::uint32_t> releaseState_;
   static constexpr std::uint32_t kReleased = 0xffffffff;
