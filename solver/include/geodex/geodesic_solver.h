@@ -204,6 +204,9 @@ class GeodesicSolver {
   std::vector<std::vector<Index>> releaseBuckets_;
   std::size_t nextReleaseBucket_ = 0;
   EdgeUpdateReport report_;
+  /// The attached observer's readsIntervalLists(), read once a solve: without it, edge updates do
+  /// not copy the list into before_ (EdgeUpdateEvent::before is then empty).
+  bool observerReadsLists_ = false;
   std::vector<Interval> scratch_, before_;
   DegeneracyCounters counters_;
   SolveStats stats_;
