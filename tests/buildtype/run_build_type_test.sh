@@ -12,11 +12,17 @@ mkdir -p "$work"
 options=(-G Ninja -DGEODEX_BUILD_TESTS=OFF -DGEODEX_BUILD_BENCH=OFF -DGEODEX_PYTHON=OFF
          -DCMAKE_BUILD_TYPE=Release)
 for cxx in "$first" "$second"; do
-  "$cmake" -S "$source" -B "$work/build" "${options[@]}" -DCMAKE_CXX_COMPILER="$cxx" \
-    >"$work/configure.log" 2>&1 || { cat "$work/configure.log" >&2; echo "FAIL: configure with $cxx" >&2; exit 1; }
+  if ! "$cmake" -S "$source" -B "$work/build" "${options[@]}" -DCMAKE_CXX_COMPILER="$cxx" \
+    >"$work/configure.log" 2>&1; then
+    cat "$work/configure.log" >&2
+    echo "FAIL: configure with $cxx" >&2
+    exit 1
+  fi
 done
-grep -q "cache to be deleted" "$work/configure.log" ||
-  { echo "FAIL: the compiler change did not reset the cache; the test no longer sets the trap" >&2; exit 1; }
+if ! grep -q "cache to be deleted" "$work/configure.log"; then
+  echo "FAIL: the compiler change did not reset the cache; the test no longer sets the trap" >&2
+  exit 1
+fi
 type=$(sed -n 's/^CMAKE_BUILD_TYPE:STRING=//p' "$work/build/CMakeCache.txt")
 compiler=$(sed -n 's/^CMAKE_CXX_COMPILER:[A-Z]*=//p' "$work/build/CMakeCache.txt")
 echo "after $first then $second: CMAKE_BUILD_TYPE='$type', CMAKE_CXX_COMPILER=$compiler"
