@@ -540,6 +540,8 @@ namespace {
 // Pieces of the incoming interval carry this flag until the end of the update, so that
 // report.incomingSurvived can tell whether any of it is left.
 constexpr std::uint8_t kFromIncoming = 4;
+// Pieces of an earlier interval of a run (insertRun) while a later one's steps 1 and 2 run.
+constexpr std::uint8_t kFromRun = 8;
 
 // ===  Steps 1 and 2 ==============================================================================
 // One pass over the slice (the list's intervals [s0, s1), given as `slice`; the first of them
@@ -889,7 +891,8 @@ void giveTieStripsToTheIncoming(Slice& s, EdgeUpdateReport& report) {
 // piece could not (corpus/fuzz_edge_update/regress/no-tiny-interval-step-5-merge-makes-a-sliver-
 // takeable-after-step-3). Each pass sews or resolves what it finds for good, and steps 3 and 5
 // only remove, so this ends. Returns whether any piece of the incoming interval is left.
-bool repairSlice(Slice& s, EdgeUpdateReport& report) {
+// (`tieStripsGiven`: a run's update gave each child its tie strips as it arrived.)
+bool repairSlice(Slice& s, EdgeUpdateReport& report, bool tieStripsGiven = false) {
   // No interval of the slice can be a D1 sliver unless it is shorter than ε at the largest
   // length scale around (tinyLengthBetween takes ε or a ray-end precision, kRayEndRel <=
   // kTinyIntervalRel, of the interval or a neighbour; steps 3–5 move ranges, never sources):
@@ -911,7 +914,7 @@ bool repairSlice(Slice& s, EdgeUpdateReport& report) {
   // now, step 3 finds nothing in any pass.
   const bool mayHaveSlivers = shortest < sliverBound;
 
-  if (incomingRuns >= 2) [[unlikely]]
+  if (incomingRuns >= 2 && !tieStripsGiven) [[unlikely]]
     giveTieStripsToTheIncoming(s, report);
   for (bool again = true; again;) {
     if (mayHaveSlivers) removeTinyIntervals(s, sliverBound, report);
@@ -944,6 +947,28 @@ bool keepsTheOuterEnd(const Interval& now, const Interval& was, bool front) {
          now.pending() == was.pending();
 }
 
+// The new intervals L[0, m) of the list's slice [s0, s1), with the list's intervals just outside
+// it.
+Slice sliceOf(Interval* L, std::size_t m, std::span<const Interval> list, std::size_t s0,
+              std::size_t s1, double edgeLength) {
+  return Slice{L, m, s0 == 0 ? nullptr : &list[s0 - 1], s1 == list.size() ? nullptr : &list[s1],
+               edgeLength};
+}
+
+// Whether steps 3–5 left the outer ends of the list's slice [s0, s1) as they were
+// (keepsTheOuterEnd), so that the rewritten slice `s` can go back; if not, the slice is widened by
+// two on each side that changed, for the update to be done again.
+bool outerEndsKeptElseWiden(const Slice& s, std::span<const Interval> list, std::size_t& s0,
+                            std::size_t& s1) {
+  const std::size_t n = list.size();
+  const bool frontKept = s0 == 0 || (s.m > 0 && keepsTheOuterEnd(s.L[0], list[s0], true));
+  const bool backKept = s1 == n || (s.m > 0 && keepsTheOuterEnd(s.L[s.m - 1], list[s1 - 1], false));
+  if (frontKept && backKept) return true;
+  if (!frontKept) s0 = s0 >= 2 ? s0 - 2 : 0;
+  if (!backKept) s1 = std::min(n, s1 + 2);
+  return false;
+}
+
 // The general update: steps 1–5 over the slice of the old intervals [j0, j1) the incoming range
 // reaches and one neighbour on each side, widened while steps 3–5 change an outer one, spliced
 // back.
@@ -967,18 +992,115 @@ void updateSlice(IntervalList& edgeList, std::size_t j0, std::size_t j1, const I
     Pieces pieces{out.data(), 0, out.size()};
     splitAndKeepShorter(list.subspan(s0, s1 - s0), j0 - s0, incoming, scan, edgeLength, report,
                         pieces);
-    s = Slice{pieces.data, pieces.size, s0 == 0 ? nullptr : &list[s0 - 1],
-              s1 == n ? nullptr : &list[s1], edgeLength};
+    s = sliceOf(pieces.data, pieces.size, list, s0, s1, edgeLength);
     report.incomingSurvived = repairSlice(s, report);
-    const bool frontKept = s0 == 0 || (s.m > 0 && keepsTheOuterEnd(s.L[0], list[s0], true));
-    const bool backKept =
-        s1 == n || (s.m > 0 && keepsTheOuterEnd(s.L[s.m - 1], list[s1 - 1], false));
-    if (frontKept && backKept) break;
-    if (!frontKept) s0 = s0 >= 2 ? s0 - 2 : 0;
-    if (!backKept) s1 = std::min(n, s1 + 2);
+    if (outerEndsKeptElseWiden(s, list, s0, s1)) break;
     report.clear();
   }
 
+  edgeList.replace(s0, s1, std::span<const Interval>(s.L, s.m));
+  report.first = s0;
+  report.last = s0 + s.m;
+}
+
+// ===  A run of incoming intervals ================================================================
+// The children one batch of windows sends to this edge (GeodesicSolver::propagateEdgeSide): steps
+// 1 and 2 for each in turn, on a copy of the list's slice over all of them, then steps 3–5 once
+// over that copy and one splice. Each child meets the intervals as the ones before it left them,
+// as it would one update after another; only the repairs of steps 3–5 are not made between them,
+// and neither are the finding of a slice, the splice and the solver's bookkeeping. Steps 1 and 2
+// read nothing of a repair but the intervals themselves: a D1 sliver a child leaves is merged
+// after the next one cut it or not, a same-source piece is joined after it met the next child
+// (which it does as the one function it is), and a D2 overlap is resolved at the child's ends as
+// it arrives.
+void updateRunSlice(IntervalList& edgeList, std::size_t j0, std::size_t j1,
+                    std::span<const Interval> run, double edgeLength, EdgeUpdateReport& report,
+                    std::vector<Interval>& out, std::vector<Interval>& work) {
+  const std::span<const Interval> list(edgeList);
+  // The slice as updateSlice takes it: the children's range and a neighbour on each side, widened
+  // while steps 3–5 change an outer one.
+  std::size_t s0 = j0 >= 1 ? j0 - 1 : 0, s1 = std::min(list.size(), j1 + 1);
+  Slice s{};
+  for (;;) {
+    work.assign(list.begin() + static_cast<std::ptrdiff_t>(s0),
+                list.begin() + static_cast<std::ptrdiff_t>(s1));
+    bool changed = false;
+    std::size_t guess = 0;  // where the last child went: a batch's children come along the edge
+    for (const Interval& in : run) {
+      const std::span<const Interval> w(work);
+      const std::size_t k0 =
+          partitionFrom(w, guess, [&](const Interval& v) { return v.b1 <= in.b0; });
+      guess = k0;
+      const std::size_t k1 = partitionFrom(w, k0, [&](const Interval& v) { return v.b0 < in.b1; });
+      ReachedScan scan;
+      const std::span<const Interval> reached = w.subspan(k0, k1 - k0);
+      if (incomingLosesEverywhere(in, reached, edgeLength, scan)) continue;
+      if (out.size() < piecesBound(reached.size())) out.resize(piecesBound(reached.size()));
+      Pieces pieces{out.data(), 0, out.size()};
+      const std::size_t earlierBreakpoints = report.eq1Breakpoints.size();
+      splitAndKeepShorter(reached, 0, in, scan, edgeLength, report, pieces);
+      // An earlier child's Eq. 1 breakpoint that a piece of this one reaches joins other functions
+      // now, which Eq. 1 never made equal: it is no breakpoint any more (corpus/fuzz_edge_update/
+      // regress/continuous-at-eq1-run-breakpoint-of-an-earlier-child-taken-by-a-later-one). This
+      // child's pieces lie within its range, which most earlier breakpoints are outside of. Before
+      // the tie strips, whose pass erases breakpoints of its own (corpus/fuzz_edge_update/regress/
+      // negative-size-param-run-tie-strip-erased-an-earlier-childs-breakpoint).
+      const auto reachedByThisChild = [&](double x) {
+        if (x < in.b0 || x > in.b1) return false;
+        for (std::size_t k = 0; k < pieces.size; ++k)
+          if ((pieces.data[k].flags & kFromIncoming) && pieces.data[k].b0 <= x &&
+              x <= pieces.data[k].b1)
+            return true;
+        return false;
+      };
+      if (earlierBreakpoints > 0) {
+        const auto earlierEnd =
+            report.eq1Breakpoints.begin() + static_cast<std::ptrdiff_t>(earlierBreakpoints);
+        report.eq1Breakpoints.erase(
+            std::remove_if(report.eq1Breakpoints.begin(), earlierEnd, reachedByThisChild),
+            earlierEnd);
+      }
+      // The tie strips between two pieces of this child, before the next child can cut them. The
+      // earlier children's pieces are old intervals to this one, as they would be one update
+      // after another: they carry kFromRun instead of kFromIncoming meanwhile.
+      int incomingRuns = 0;  // (a tie strip needs two)
+      for (std::size_t k = 0; k < pieces.size; ++k)
+        incomingRuns += (pieces.data[k].flags & kFromIncoming) &&
+                        (k == 0 || !(pieces.data[k - 1].flags & kFromIncoming));
+      if (incomingRuns >= 2) [[unlikely]] {
+        Slice own{pieces.data, pieces.size, nullptr, nullptr, edgeLength};
+        giveTieStripsToTheIncoming(own, report);
+        pieces.size = own.m;
+      }
+      for (std::size_t k = 0; k < pieces.size; ++k)
+        if (pieces.data[k].flags & kFromIncoming)
+          pieces.data[k].flags =
+              static_cast<std::uint8_t>((pieces.data[k].flags & ~kFromIncoming) | kFromRun);
+      const auto at = work.begin() + static_cast<std::ptrdiff_t>(k0);
+      const std::size_t common = std::min(reached.size(), pieces.size);
+      std::copy_n(pieces.data, common, at);
+      if (pieces.size > common) {
+        work.insert(at + static_cast<std::ptrdiff_t>(common), pieces.data + common,
+                    pieces.data + pieces.size);
+      } else {
+        work.erase(at + static_cast<std::ptrdiff_t>(common),
+                   at + static_cast<std::ptrdiff_t>(reached.size()));
+      }
+      changed = true;
+    }
+    if (!changed) {  // every child lost everywhere: the list stays as it was
+      report.first = j0;
+      report.last = j1;
+      return;
+    }
+    for (Interval& w : work)
+      if (w.flags & kFromRun)
+        w.flags = static_cast<std::uint8_t>((w.flags & ~kFromRun) | kFromIncoming);
+    s = sliceOf(work.data(), work.size(), list, s0, s1, edgeLength);
+    report.incomingSurvived = repairSlice(s, report, true);
+    if (outerEndsKeptElseWiden(s, list, s0, s1)) break;
+    report.clear();
+  }
   edgeList.replace(s0, s1, std::span<const Interval>(s.L, s.m));
   report.first = s0;
   report.last = s0 + s.m;
@@ -1230,6 +1352,30 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
     report.clear();
   }
   updateSlice(list_, j0, j1, incoming, scan, edgeLength, report, out);
+}
+
+void EdgeIntervals::insertRun(std::span<const Interval> run, double edgeLength,
+                              EdgeUpdateReport& report, std::vector<Interval>& out,
+                              std::vector<Interval>& work) {
+  if (run.size() == 1) {
+    insert(run.front(), edgeLength, report, out);
+    return;
+  }
+  report.clear();
+  if (run.empty()) return;
+  double lo = run.front().b0, hi = run.front().b1;
+  for (const Interval& in : run) {
+    GEODEX_CHECK(in.b0 >= 0.0 && in.b1 <= edgeLength && in.b0 < in.b1,
+                 "incoming interval [" << in.b0 << ", " << in.b1 << "] not inside [0, "
+                                       << edgeLength << "]");
+    lo = std::min(lo, in.b0);
+    hi = std::max(hi, in.b1);
+  }
+  const std::size_t n = list_.size();
+  const std::size_t j0 = partitionFrom(list_, guessIndex(n, lo, edgeLength),
+                                       [&](const Interval& w) { return w.b1 <= lo; });
+  const std::size_t j1 = partitionFrom(list_, j0, [&](const Interval& w) { return w.b0 < hi; });
+  updateRunSlice(list_, j0, j1, run, edgeLength, report, out, work);
 }
 
 }  // namespace geodex

@@ -191,7 +191,7 @@ void GeodesicSolver::seedSource(const ResolvedPoint& p, std::size_t number) {
         seedCorner(fr.apex, (fr.apexPos - Vec2(p.t, 0.0)).norm());
       }
       seedZeroAreaStrip(p.element, p.t);
-      addInterval(p.element, own, nullptr);
+      addInterval(p.element, own);
       for (Index f : E.face)
         if (f != kNoIndex) seedFaceFromPoint(f, p, p.element, 0.0, origin);
       return;
@@ -267,7 +267,7 @@ void GeodesicSolver::seedFaceFromPoint(Index f, const ResolvedPoint& p, Index sk
     if (e == skip) continue;
     Interval w = windowFromPoint(mesh_, f, e, p, sigma, origin);
     if (mesh_.edge(e).face[1 - w.side] == kNoIndex) w.markPropagated();
-    addInterval(e, w, nullptr);
+    addInterval(e, w);
   }
 }
 
@@ -305,7 +305,7 @@ void GeodesicSolver::createPseudoSourceWindows(Index v, double sigma, std::int32
     w.side = static_cast<std::uint8_t>(mesh_.sideOf(fr.edge, f));
     w.origin = origin;
     if (mesh_.edge(fr.edge).face[1 - w.side] == kNoIndex) w.markPropagated();
-    if (!dominatedAtAnEdgeEnd(fr.edge, w)) addInterval(fr.edge, w, nullptr);
+    if (!dominatedAtAnEdgeEnd(fr.edge, w)) addInterval(fr.edge, w);
     seedAcrossVertexOnEdge(v, f, fr, sigma, origin, depth, from);
   }
   for (Index e : mesh_.vertexEdges(v)) {
@@ -317,7 +317,7 @@ void GeodesicSolver::createPseudoSourceWindows(Index v, double sigma, std::int32
     w.sigma = sigma;
     w.origin = origin;
     w.markPropagated();
-    addInterval(e, w, nullptr);
+    addInterval(e, w);
   }
 }
 
@@ -377,6 +377,8 @@ void GeodesicSolver::seedAcrossPointOnEdge(Index v, Index e, Index f, double x, 
 }
 
 // ===  One propagation case =======================================================================
+// Its children are not added to their edges here: they join the runs propagateEdgeSide adds to
+// each child edge once the batch is done.
 void GeodesicSolver::propagate(Index edge, const Interval& w, Index f, const FaceFrame& fr) {
   const Edge& E = mesh_.edge(edge);
   ++stats_.intervalsPropagated;
@@ -384,25 +386,14 @@ void GeodesicSolver::propagate(Index edge, const Interval& w, Index f, const Fac
   const LocalWindow local{E.length, fr.apexPos, w.b0, w.b1, Vec2(w.source.x(), -w.source.y())};
   const LocalPropagation result = propagateLocal(local);
   ++counters_.cases;
-  const std::uint64_t discontinuitiesBefore = counters_.discontinuityTotal();
   const auto kind = degeneracyOf(result.branch);
   if (kind) ++counters_[*kind];
   if (result.branch == Fig6Branch::ZeroAreaFace) ++counters_.zeroAreaFaces;
   if (result.branch == Fig6Branch::G1Outside) ++counters_.sourceOnEdgeLineOutside;
-  if (hooked()) observer_->onPropagation({f, edge, w, local, result});
-  // In G2–G5 a window's edge ray runs through the apex, and the far edge's side next to the apex
-  // is left to the neighbouring window, which can fan away from this ray there: two sources'
-  // boundary, exact on a line through the apex, moved 5e-12 off it when step 3 gave a D1 sliver
-  // to the coarser neighbour, and a wedge 2e-11 wide behind the apex was reached by neither
-  // (SolverRegression.TwoSourcesMeetingOnARayThroughAFaceApexLeaveNoWedgeBehindIt, G2); an edge
-  // source on a line through two vertices lost the fan beyond them the same way
-  // (SolverRegression.AnEdgeSourceOnALineThroughTwoVerticesReachesBeyondThem, G4/G5). The apex
-  // relays the fan: a path along the ray and on from the apex is a real path.
-  if (result.branch == Fig6Branch::G2 || result.branch == Fig6Branch::G3 ||
-      result.branch == Fig6Branch::G4 || result.branch == Fig6Branch::G5) [[unlikely]]
-    relayFanThroughVertex(fr.apex, counters_.apexFansRelayed);
 
   const bool oneLine = childEdgesOnOneLine(local);
+  std::array<MadeChild, 2> madeChildren;
+  std::size_t numMade = 0;
   for (int c = 0; c < result.numChildren; ++c) {
     const LocalChild& child = result.children[c];
     const bool onE1 = child.edge == 1;
@@ -417,9 +408,49 @@ void GeodesicSolver::propagate(Index edge, const Interval& w, Index f, const Fac
     n.side = static_cast<std::uint8_t>(mesh_.sideOf(ce, f));
     n.origin = w.origin;
     if (CE.face[1 - n.side] == kNoIndex) n.markPropagated();
-    addInterval(ce, n, &result.branch);
+    madeChildren[numMade++] = {ce, n};
   }
-  if (kind || counters_.discontinuityTotal() != discontinuitiesBefore) ++counters_.degenerateCases;
+  if (hooked())
+    observer_->onPropagation(
+        {f, edge, w, local, result, std::span<const MadeChild>(madeChildren.data(), numMade)});
+  // In G2–G5 a window's edge ray runs through the apex, and the far edge's side next to the apex
+  // is left to the neighbouring window, which can fan away from this ray there: two sources'
+  // boundary, exact on a line through the apex, moved 5e-12 off it when step 3 gave a D1 sliver
+  // to the coarser neighbour, and a wedge 2e-11 wide behind the apex was reached by neither
+  // (SolverRegression.TwoSourcesMeetingOnARayThroughAFaceApexLeaveNoWedgeBehindIt, G2); an edge
+  // source on a line through two vertices lost the fan beyond them the same way
+  // (SolverRegression.AnEdgeSourceOnALineThroughTwoVerticesReachesBeyondThem, G4/G5). The apex
+  // relays the fan: a path along the ray and on from the apex is a real path.
+  if (result.branch == Fig6Branch::G2 || result.branch == Fig6Branch::G3 ||
+      result.branch == Fig6Branch::G4 || result.branch == Fig6Branch::G5) [[unlikely]]
+    relayFanThroughVertex(fr.apex, counters_.apexFansRelayed);
+
+  const auto caseInBatch = static_cast<std::uint32_t>(batchCaseDegenerate_.size());
+  batchCaseDegenerate_.push_back(kind.has_value());
+  for (std::size_t k = 0; k < numMade; ++k) {
+    Run& run = runs_[madeChildren[k].edge == fr.edgeToV0 ? 0 : 1];
+    run.incoming.push_back(madeChildren[k].interval);
+    run.branches.push_back(result.branch);
+    run.cases.push_back(caseInBatch);
+  }
+}
+
+// Adds each run of the batch's children to its edge (addRun). A case is degenerate when its Fig. 6
+// leaf is G1–G5 or the update its children went into repaired a D1–D4.
+void GeodesicSolver::addBatchRuns(const FaceFrame& fr) {
+  for (int k = 0; k < 2; ++k) {
+    Run& run = runs_[k];
+    if (run.incoming.empty()) continue;
+    addRun(k == 0 ? fr.edgeToV0 : fr.edgeToV2, run);
+    DegeneracyCounters found;
+    found += report_.degeneracies;
+    if (found.discontinuityTotal() > 0)
+      for (const std::uint32_t c : run.cases) batchCaseDegenerate_[c] = 1;
+    run.clear();
+  }
+  for (const std::uint8_t degenerate : batchCaseDegenerate_)
+    counters_.degenerateCases += degenerate;
+  batchCaseDegenerate_.clear();
 }
 
 // The windows on one side of an edge are propagated together, as VTP (Qin et al. 2016) propagates
@@ -458,6 +489,7 @@ void GeodesicSolver::propagateEdgeSide(const QueueEntry& entry, double upTo) {
     const Interval window = w;
     propagate(edge, window, f, fr);
   }
+  addBatchRuns(fr);
   pendingKey = rest;
   if (rest < kInfinity) queue_.push(QueueEntry::edgeSide(edge, side, rest));
 }
@@ -575,7 +607,7 @@ std::span<const EdgeIntervals> GeodesicSolver::edgeIntervals() const {
 }
 
 // ===  Edge updates and vertex distances ==========================================================
-void GeodesicSolver::addInterval(Index edge, const Interval& w, const Fig6Branch* branch) {
+void GeodesicSolver::addInterval(Index edge, const Interval& w) {
   if (releasing_) {
     if (releaseState_[edge] == kReleased) [[unlikely]] {
       releaseBroken_ = true;  // the solve starts again keeping every list
@@ -590,6 +622,44 @@ void GeodesicSolver::addInterval(Index edge, const Interval& w, const Fig6Branch
   // CLI's progress line 8 % of bunny00's solve at a terminal.
   if (observerReadsLists_) before_.assign(list.intervals().begin(), list.intervals().end());
   list.insert(w, length, report_, scratch_);
+  afterUpdate(edge);
+  if (hooked()) {
+    const std::span<const Interval> before =
+        observerReadsLists_ ? std::span<const Interval>(before_) : std::span<const Interval>();
+    observer_->onEdgeUpdate({edge, length, before, {&w, 1}, list.intervals(), report_, {}});
+  }
+}
+
+// Steps 1 and 2 for each child in turn, steps 3–5 once (EdgeIntervals::insertRun): 83 % of
+// bunny00's updates were a later child of the same batch on the same edge, and one update per
+// child cost 8–14 % more of the solve on the real meshes (docs/benchmarks.md).
+void GeodesicSolver::addRun(Index edge, const Run& run) {
+  if (releasing_) {
+    if (releaseState_[edge] == kReleased) [[unlikely]] {
+      releaseBroken_ = true;  // the solve starts again keeping every list
+      report_.clear();        // (no update: addBatchRuns reads no repairs of an earlier one)
+      return;
+    }
+    for (const Interval& w : run.incoming) fileForRelease(edge, w);
+  }
+  stats_.intervalsCreated += run.incoming.size();
+  const double length = mesh_.edge(edge).length;
+  EdgeIntervals& list = edges_[edge];
+  if (observerReadsLists_) before_.assign(list.intervals().begin(), list.intervals().end());
+  list.insertRun(run.incoming, length, report_, scratch_, work_);
+  afterUpdate(edge);
+  if (hooked()) {
+    const std::span<const Interval> before =
+        observerReadsLists_ ? std::span<const Interval>(before_) : std::span<const Interval>();
+    observer_->onEdgeUpdate(
+        {edge, length, before, run.incoming, list.intervals(), report_, run.branches});
+  }
+}
+
+// What an update of `edge` (report_) means for the queue and the vertices.
+void GeodesicSolver::afterUpdate(Index edge) {
+  const double length = mesh_.edge(edge).length;
+  EdgeIntervals& list = edges_[edge];
   for (DegeneracyKind k :
        {DegeneracyKind::D1, DegeneracyKind::D2, DegeneracyKind::D3, DegeneracyKind::D4})
     counters_[k] += report_.degeneracies[k];  // (Algorithm 2 finds only these)
@@ -618,11 +688,6 @@ void GeodesicSolver::addInterval(Index edge, const Interval& w, const Fig6Branch
       updateVertex(E.vertex[0], intervals.front().distanceAt(0.0));
     if (report_.last == intervals.size() && intervals.back().b1 == length)
       updateVertex(E.vertex[1], intervals.back().distanceAt(length));
-  }
-  if (hooked()) {
-    const std::span<const Interval> before =
-        observerReadsLists_ ? std::span<const Interval>(before_) : std::span<const Interval>();
-    observer_->onEdgeUpdate({edge, length, before, w, list.intervals(), report_, branch});
   }
 }
 

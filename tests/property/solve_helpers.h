@@ -95,9 +95,10 @@ inline Solved solveChecked(const Mesh& mesh, const std::vector<SurfacePoint>& so
     for (const SurfacePoint& p : sources) os << " --source " << formatSurfacePoint(p);
     if (v->edge != kNoIndex) {
       os << "\n  edge " << v->edge << " (length " << v->edgeLength << "), incoming from "
-         << v->branch << ": [" << v->incoming.b0 << ", " << v->incoming.b1 << "] s=("
-         << v->incoming.source.x() << ", " << v->incoming.source.y()
-         << ") sigma=" << v->incoming.sigma;
+         << v->branch << ":";
+      for (const Interval& w : v->incoming)
+        os << " [" << w.b0 << ", " << w.b1 << "] s=(" << w.source.x() << ", " << w.source.y()
+           << ") sigma=" << w.sigma;
     }
     RC_FAIL(os.str());
   }

@@ -31,8 +31,14 @@ struct Edge1 {
   EdgeUpdateReport report;
   std::vector<Interval> scratch;
   DegeneracyCounters total;
+  std::vector<Interval> work;
   void insert(const Interval& w) {
     list.insert(w, kL, report, scratch);
+    total += report.degeneracies;
+  }
+  /// Several at once, as the solver merges a batch's children on one edge.
+  void insertRun(std::vector<Interval> run) {
+    list.insertRun(run, kL, report, scratch, work);
     total += report.degeneracies;
   }
   /// The intervals the last update created or changed that still need propagating: what the
@@ -191,16 +197,22 @@ TEST(Algorithm2, ATieBetweenASourceAndASaddleOnItsLineGoesToTheSourceInEitherOrd
   }
 }
 
-// Inserts `window` and `strip` in both orders. A tie strip stays with the window around it
-// (one interval, the window's, over the whole edge); a strip shorter by more than the tie
-// tolerance is cut out of it (three intervals, the strip's in the middle).
+// Inserts `window` and `strip` in both orders, one update each and as one run. A tie strip stays
+// with the window around it (one interval, the window's, over the whole edge); a strip shorter by
+// more than the tie tolerance is cut out of it (three intervals, the strip's in the middle).
 void expectStripInsideAWindowInEitherOrder(const Interval& window, const Interval& strip,
                                            bool ties) {
-  for (const bool windowFirst : {true, false}) {
-    SCOPED_TRACE(windowFirst ? "window first" : "strip first");
+  for (const int order : {0, 1, 2, 3}) {
+    const bool windowFirst = order % 2 == 0, asRun = order >= 2;
+    SCOPED_TRACE(std::string(windowFirst ? "window first" : "strip first") +
+                 (asRun ? ", one run" : ", two updates"));
     Edge1 e;
-    e.insert(windowFirst ? window : strip);
-    e.insert(windowFirst ? strip : window);
+    if (asRun) {
+      e.insertRun({windowFirst ? window : strip, windowFirst ? strip : window});
+    } else {
+      e.insert(windowFirst ? window : strip);
+      e.insert(windowFirst ? strip : window);
+    }
     expectWellFormed(e.list);
     if (ties) {
       ASSERT_EQ(e.list.intervals().size(), 1u);
@@ -242,6 +254,63 @@ TEST(Algorithm2, ATieStripOfTwoSourcesOnTheEdgeLineStaysWithTheWindowAroundItInE
     SCOPED_TRACE("s shorter by " + std::to_string(shorter));
     expectStripInsideAWindowInEitherOrder(alongTheEdge, make(4.0, 4.5, s, 0.5 - shorter),
                                           shorter == 0.0);
+  }
+}
+
+// A run of three children: the second meets the first at x = 2.5 by Eq. 1 (their sources are
+// mirror images about it), then the third, from a source on the edge at 0, is shorter over
+// [0, 5] and takes the second's piece up to 2.5. The breakpoint now joins the third child to the
+// first, which Eq. 1 never made equal: the update must not report it
+// (corpus/fuzz_edge_update/regress/continuous-at-eq1-run-breakpoint-of-an-earlier-child-taken-by-
+// a-later-one: reported, the checker found 2.5 against 3.37 there).
+TEST(Algorithm2, ARunsLaterChildTakingAnEarlierOnesEq1BreakpointLeavesNoBreakpointThere) {
+  Edge1 e;
+  e.insertRun({make(0.0, 5.0, Vec2(5.625, 1.25), 0.0), make(1.25, 7.5, Vec2(-0.625, 1.25), 0.0),
+               make(0.0, 2.5, Vec2(0.0, 0.0), 0.0)});
+  expectWellFormed(e.list);
+  const auto list = e.list.intervals();
+  for (const double x : e.report.eq1Breakpoints) {
+    for (std::size_t i = 0; i + 1 < list.size(); ++i) {
+      if (list[i].b1 != x || list[i + 1].b0 != x) continue;
+      EXPECT_NEAR(list[i].distanceAt(x), list[i + 1].distanceAt(x), 1e-12) << "breakpoint " << x;
+    }
+  }
+  // The pieces as the three distances order them: the third up to 2.5, the first, the second.
+  ASSERT_EQ(list.size(), 3u);
+  EXPECT_EQ(list[0].source, Vec2(0.0, 0.0));
+  EXPECT_EQ(list[1].source, Vec2(5.625, 1.25));
+  EXPECT_EQ(list[2].source, Vec2(-0.625, 1.25));
+}
+
+// A run of four children on an edge of about 2^20: a source on the edge's line at 512, then three
+// nearly the same geodesic from the edge's start (a source 0.5 and 2e-5 above it, one on it). The
+// later ones tie the earlier ones' pieces between their own, and the tie strip pass erased an
+// earlier child's Eq. 1 breakpoint, which left the run's count of earlier breakpoints past the
+// end of the list: erasing up to it was out of bounds (AddressSanitizer: negative-size-param;
+// corpus/fuzz_edge_update/regress/negative-size-param-run-tie-strip-erased-an-earlier-childs-
+// breakpoint). The update must stay in bounds, leave the list well formed and report only
+// breakpoints where the two distances agree.
+TEST(Algorithm2, ATieStripPassInARunMayEraseAnEarlierChildsBreakpoint) {
+  const double length = 1048575.9999934464;
+  EdgeIntervals list;
+  EdgeUpdateReport report;
+  std::vector<Interval> scratch, work;
+  const std::vector<Interval> run = {make(0.0, 1024.0, Vec2(512.0, 0.0), 0.0),
+                                     make(0.0, length, Vec2(0.0001677721599989514, 0.5), 0.0),
+                                     make(0.0, 1048320.5, Vec2(0.0, 2.0971519999868925e-05), 0.0),
+                                     make(0.0, 256.0, Vec2(0.0, 0.0), 0.0)};
+  list.insertRun(run, length, report, scratch, work);
+  const auto w = list.intervals();
+  ASSERT_FALSE(w.empty());
+  EXPECT_EQ(w.front().b0, 0.0);
+  EXPECT_EQ(w.back().b1, length);
+  for (std::size_t i = 0; i + 1 < w.size(); ++i) EXPECT_EQ(w[i].b1, w[i + 1].b0);
+  for (const double x : report.eq1Breakpoints) {
+    for (std::size_t i = 0; i + 1 < w.size(); ++i) {
+      if (w[i].b1 != x || w[i + 1].b0 != x) continue;
+      EXPECT_NEAR(w[i].distanceAt(x), w[i + 1].distanceAt(x), 1e-9 * (x + 1.0))
+          << "breakpoint " << x;
+    }
   }
 }
 

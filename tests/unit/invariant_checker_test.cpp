@@ -84,11 +84,17 @@ TEST(InvariantChecker, SourceBelowTheEdgeFails) {
 struct Update {
   std::vector<Interval> before, after;
   Interval incoming;
+  std::vector<Interval> laterIncoming;  // the rest of a run
   EdgeUpdateReport report;
-  EdgeUpdateEvent event() const { return {0, kL, before, incoming, after, report, nullptr}; }
+  std::vector<Interval> run;
+  EdgeUpdateEvent event() {
+    run = {incoming};
+    run.insert(run.end(), laterIncoming.begin(), laterIncoming.end());
+    return {0, kL, before, run, after, report, {}};
+  }
 };
 
-std::string violatedBy(const Update& u) {
+std::string violatedBy(Update u) {
   InvariantChecker checker(CheckLevel::Full, /*throwOnViolation=*/true);
   try {
     checker.onEdgeUpdate(u.event());
@@ -539,7 +545,8 @@ TEST(InvariantChecker, ACheckerThatDoesNotThrowKeepsTheFirstViolationForTheRepor
   ASSERT_NE(v, nullptr);
   EXPECT_EQ(v->invariant(), "pointwise-min");
   EXPECT_EQ(v->edgeLength, kL);
-  EXPECT_EQ(v->incoming.b0, 2.0);
+  ASSERT_EQ(v->incoming.size(), 1u);
+  EXPECT_EQ(v->incoming[0].b0, 2.0);
   EXPECT_EQ(v->after.size(), 1u);
 }
 

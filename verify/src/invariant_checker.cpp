@@ -54,6 +54,16 @@ double sourceDistance(const Interval& w, double x) {
   return std::hypot(dx, dy);
 }
 
+// The range [lo, hi] the incoming intervals of an update span together.
+struct Hull {
+  double lo, hi;
+};
+Hull incomingHull(const EdgeUpdateEvent& e) {
+  Hull h{INFINITY, -INFINITY};
+  for (const Interval& w : e.incoming) h.lo = std::min(h.lo, w.b0), h.hi = std::max(h.hi, w.b1);
+  return h;
+}
+
 // The same distance function: distanceAt gives the same value at every x, to the bit.
 bool sameFunction(const Interval& a, const Interval& b) {
   return a.source == b.source && a.sigma == b.sigma;
@@ -121,8 +131,8 @@ void InvariantChecker::record(Id id, bool ok, double error, const std::string& w
     v->edgeLength = e->edgeLength;
     v->before.assign(e->before.begin(), e->before.end());
     v->after.assign(e->after.begin(), e->after.end());
-    v->incoming = e->incoming;
-    v->branch = e->branch != nullptr ? std::string(name(*e->branch)) : "source";
+    v->incoming.assign(e->incoming.begin(), e->incoming.end());
+    v->branch = e->branches.empty() ? "source" : std::string(name(e->branches.front()));
   }
   if (throw_) throw *v;
   first_ = std::move(v);
@@ -252,9 +262,10 @@ ListRanges reportedRange(const EdgeUpdateEvent& e) {
   // The solver's range may begin or end with intervals it wrote back as they were, away from the
   // incoming range: they are left out too (the minimum holds there by itself). Those the incoming
   // range meets stay, as the pieces its samples need.
+  const Hull in = incomingHull(e);
   return pastSameIntervals(
-      e, {first, last, first, beforeHi}, [&](const Interval& w) { return w.b1 < e.incoming.b0; },
-      [&](const Interval& w) { return w.b0 > e.incoming.b1; });
+      e, {first, last, first, beforeHi}, [&](const Interval& w) { return w.b1 < in.lo; },
+      [&](const Interval& w) { return w.b0 > in.hi; });
 }
 
 }  // namespace
@@ -350,7 +361,9 @@ double sewingSlack(const EdgeUpdateEvent& e, std::span<const Interval> beforeNea
   double tiny = tol::kTinyIntervalRel * e.edgeLength;
   for (const Interval& w : beforeNear)
     tiny = std::max({tiny, tinyLength(w, e.edgeLength), sewLength(w, e.edgeLength)});
-  return std::max({tiny, tinyLength(e.incoming, e.edgeLength), sewLength(e.incoming, e.edgeLength)});
+  for (const Interval& w : e.incoming)
+    tiny = std::max({tiny, tinyLength(w, e.edgeLength), sewLength(w, e.edgeLength)});
+  return tiny;
 }
 
 // Where the difference of two distance functions along the edge can be largest inside the span
@@ -379,10 +392,10 @@ std::array<double, 3> largestDifferenceAt(const Interval& f, const Interval& g, 
 }
 
 // Where a walk does not know which intervals cover a piece: appendWhereBelow for every two
-// functions of `runs` and the incoming one, over the stretch of [from, to] both reach.
+// functions of `runs` (the old list's, the new one's and the incoming ones), over the stretch of
+// [from, to] both reach.
 [[gnu::noinline]] void appendWhereAnyIsBelow(std::span<const std::span<const Interval>> runs,
-                                             const Interval& incoming, double from, double to,
-                                             std::vector<double>& out) {
+                                             double from, double to, std::vector<double>& out) {
   const auto pair = [&](const Interval& f, const Interval& g) {
     const double lo = std::max({f.b0, g.b0, from}), hi = std::min({f.b1, g.b1, to});
     if (!(lo < hi)) return;
@@ -390,12 +403,10 @@ std::array<double, 3> largestDifferenceAt(const Interval& f, const Interval& g, 
     appendWhereBelow(g, f, lo, hi, out);
   };
   for (std::size_t r = 0; r < runs.size(); ++r)
-    for (const Interval& w : runs[r]) {
-      pair(w, incoming);
+    for (const Interval& w : runs[r])
       for (std::size_t t = r; t < runs.size(); ++t)
         for (const Interval& v : runs[t])
           if (&v > &w || t > r) pair(w, v);
-    }
 }
 
 // Merges `extra` (in no order) into the sorted `xs`.
@@ -433,7 +444,8 @@ std::span<const double> InvariantChecker::pointwiseMinSamples(
   // Beyond that the neighbours are the same intervals before and after (changedRange compared
   // them) and no incoming value is there, so the minimum holds by itself (their pieces still get
   // a midpoint below).
-  double from = e.incoming.b0, to = e.incoming.b1;
+  const Hull hull = incomingHull(e);
+  double from = hull.lo, to = hull.hi;
   const std::span<const Interval> rewrittenParts[] = {
       e.before.subspan(changed.beforeLo, changed.beforeHi - changed.beforeLo),
       e.after.subspan(changed.afterLo, changed.afterHi - changed.afterLo)};
@@ -476,15 +488,18 @@ std::span<const double> InvariantChecker::pointwiseMinSamples(
   };
   // (And the incoming range within the near parts' unless they reach the edge's end, as the
   // ranges the solver reports are: the sweep below sees no interval beyond them.)
-  const bool inOrder =
-      endsInOrder(beforeNear) && endsInOrder(afterNear) && !(e.incoming.b1 < e.incoming.b0) &&
-      (changed.beforeLo == 0 || e.incoming.b0 >= beforeNear.front().b0) &&
-      (changed.beforeHi == e.before.size() || e.incoming.b1 <= beforeNear.back().b1) &&
-      (changed.afterLo == 0 || e.incoming.b0 >= afterNear.front().b0) &&
-      (changed.afterHi == e.after.size() || e.incoming.b1 <= afterNear.back().b1);
+  // The walk follows one incoming interval: a run of them (EdgeIntervals::insertRun), which may
+  // overlap one another, takes the route for lists out of order.
+  const Interval& in = e.incoming.front();
+  const bool inOrder = e.incoming.size() == 1 && endsInOrder(beforeNear) &&
+                       endsInOrder(afterNear) && !(in.b1 < in.b0) &&
+                       (changed.beforeLo == 0 || in.b0 >= beforeNear.front().b0) &&
+                       (changed.beforeHi == e.before.size() || in.b1 <= beforeNear.back().b1) &&
+                       (changed.afterLo == 0 || in.b0 >= afterNear.front().b0) &&
+                       (changed.afterHi == e.after.size() || in.b1 <= afterNear.back().b1);
   const std::size_t numEnds = 2 * (beforeNear.size() + rewritten.size() + 1);
 
-  const double reachFrom = e.incoming.b0 - tiny, reachTo = e.incoming.b1 + tiny;
+  const double reachFrom = hull.lo - tiny, reachTo = hull.hi + tiny;
   const auto incomingNear = [&](double x) { return x >= reachFrom && x <= reachTo; };
   std::vector<double>& xs = samples_;
   xs.clear();
@@ -547,7 +562,7 @@ std::span<const double> InvariantChecker::pointwiseMinSamples(
     ends.clear();
     for (const Interval& w : beforeNear) ends.insert(ends.end(), {w.b0, w.b1});
     for (const Interval& w : rewritten) ends.insert(ends.end(), {w.b0, w.b1});
-    ends.insert(ends.end(), {e.incoming.b0, e.incoming.b1});
+    for (const Interval& w : e.incoming) ends.insert(ends.end(), {w.b0, w.b1});
     std::sort(ends.begin(), ends.end());
     for (std::size_t i = 1; i < ends.size(); ++i)
       if (ends[i] > ends[i - 1]) samplePiece(ends[i - 1], ends[i], false, pushSample);
@@ -555,8 +570,8 @@ std::span<const double> InvariantChecker::pointwiseMinSamples(
     // Which intervals cover a piece is not known here: every two functions of the update, over
     // the stretch both reach, either way round (mutant b07628e0 of docs/mutation.md sent lists of
     // touching intervals this way, where a dip between two samples went unseen).
-    const std::span<const Interval> runs[] = {beforeNear, rewritten};
-    appendWhereAnyIsBelow(runs, e.incoming, from, to, extra);
+    const std::span<const Interval> runs[] = {beforeNear, rewritten, e.incoming};
+    appendWhereAnyIsBelow(runs, from, to, extra);
     withExtra();
     return samples_;
   }
@@ -572,7 +587,7 @@ std::span<const double> InvariantChecker::pointwiseMinSamples(
   const auto endOf = [](std::span<const Interval> run, std::size_t t) {
     return (t & 1) != 0 ? run[t >> 1].b1 : run[t >> 1].b0;
   };
-  const double incomingEnds[] = {e.incoming.b0, e.incoming.b1};
+  const double incomingEnds[] = {in.b0, in.b1};
   const Interval* oldOne = nullptr;        // of beforeNear
   const Interval* rewrittenOne = nullptr;  // of rewritten
   bool incomingCovers = false;
@@ -638,13 +653,13 @@ std::span<const double> InvariantChecker::pointwiseMinSamples(
       continue;
     }
     const bool same = oldHere != nullptr && newHere != nullptr && sameFunction(*oldHere, *newHere);
-    const int newIs = newHere == nullptr                                   ? 0
-                      : incomingHere && sameFunction(*newHere, e.incoming) ? 1
-                      : same                                               ? 2
-                                                                           : 0;
+    const int newIs = newHere == nullptr                           ? 0
+                      : incomingHere && sameFunction(*newHere, in) ? 1
+                      : same                                       ? 2
+                                                                   : 0;
     const double inFrom = p + tiny, inTo = q - tiny;
     const auto evaluate = [&](double x) {
-      const double incomingValue = incomingHere ? e.incoming.distanceAt(x) : INFINITY;
+      const double incomingValue = incomingHere ? in.distanceAt(x) : INFINITY;
       const double oldValue = oldHere != nullptr ? oldHere->distanceAt(x) : INFINITY;
       const double strict = std::min(incomingValue, oldValue);
       const double got = newHere == nullptr ? INFINITY
@@ -670,16 +685,14 @@ std::span<const double> InvariantChecker::pointwiseMinSamples(
     // seen). The error is relative to the list's value plus L, which moves by at most the span's
     // width along it, so the point found has at least half the largest relative error of the
     // span. Where the new list holds the only function present, the error is 0.
-    const Interval* const other = newIs == 1                   ? oldHere
-                                  : newIs == 2 && incomingHere ? &e.incoming
-                                                               : nullptr;
+    const Interval* const other = newIs == 1 ? oldHere : newIs == 2 && incomingHere ? &in : nullptr;
     const bool none = (newIs == 1 && oldHere == nullptr) || (newIs == 2 && !incomingHere);
     // The routes below that sample a piece only uniformly also take the points where a function
     // present lies furthest below the one the new list holds.
     const auto whereBelowHere = [&] {
       if (newHere == nullptr) return;  // (no function kept: every sample's error is infinite)
       if (oldHere != nullptr && !same) appendWhereBelow(*newHere, *oldHere, p, q, extra);
-      if (incomingHere && newIs != 1) appendWhereBelow(*newHere, e.incoming, p, q, extra);
+      if (incomingHere && newIs != 1) appendWhereBelow(*newHere, in, p, q, extra);
     };
     if (!noSliverRemoved) {
       samplePiece(p, q, same, pushSample);
@@ -735,6 +748,10 @@ InvariantChecker::PointwiseMinError InvariantChecker::worstPointwiseMinError(
   auto valueWithSlack = [&](const Interval& w, double x) {
     return x >= w.b0 - tiny && x <= w.b1 + tiny ? w.distanceAt(x) : INFINITY;
   };
+  // Every value the repaired list may take at a sample: one per incoming interval and three of the
+  // old list at most.
+  std::vector<double> candidates(e.incoming.size() + 3);
+  std::vector<const Interval*> candidateOf(candidates.size());
   // Where step 3 removed a D1 sliver, a neighbour grew over it and the gap beside it, one no
   // longer than the sliver at its end by more than the slack (canTakeSliver): with both functions
   // 1-Lipschitz, the list there is above the functions really present by less than the slack and
@@ -758,7 +775,9 @@ InvariantChecker::PointwiseMinError InvariantChecker::worstPointwiseMinError(
     const std::ptrdiff_t beforeFirst = std::max<std::ptrdiff_t>(0, kBefore - 1);
     const std::ptrdiff_t beforeLast = std::min<std::ptrdiff_t>(kBefore + 1, numBefore - 1);
     const std::ptrdiff_t afterFirst = std::max<std::ptrdiff_t>(0, kAfter - 1);
-    const bool incomingNear = x >= e.incoming.b0 - tiny && x <= e.incoming.b1 + tiny;
+    bool incomingNear = false;
+    for (const Interval& w : e.incoming)
+      incomingNear = incomingNear || (x >= w.b0 - tiny && x <= w.b1 + tiny);
     // Where the incoming interval does not reach, the minimum is the old list, and where one
     // interval of each list covers x with the same function (source and σ), the new list's
     // value is the old one's to the bit: every error below is 0 there, so nothing is evaluated.
@@ -776,12 +795,15 @@ InvariantChecker::PointwiseMinError InvariantChecker::worstPointwiseMinError(
     // (Each function is evaluated once per sample: strict and loose share the value, and an
     // interval of the new list that is an old one's or the incoming one's function, cut to
     // another range, takes the value already computed.)
-    double loose = incomingNear ? e.incoming.distanceAt(x) : INFINITY;
-    double strict = e.incoming.b0 <= x && x <= e.incoming.b1 ? loose : INFINITY;
-    std::array<double, 5> candidates{};
-    std::array<const Interval*, 5> candidateOf{};
+    double loose = INFINITY, strict = INFINITY;
     std::size_t numCandidates = 0;
-    if (std::isfinite(loose)) candidateOf[numCandidates] = &e.incoming, candidates[numCandidates++] = loose;
+    for (const Interval& w : e.incoming) {
+      const double v = valueWithSlack(w, x);
+      if (!std::isfinite(v)) continue;
+      if (w.b0 <= x && x <= w.b1) strict = std::min(strict, v);
+      candidateOf[numCandidates] = &w, candidates[numCandidates++] = v;
+      loose = std::min(loose, v);
+    }
     for (std::ptrdiff_t i = beforeFirst; i <= beforeLast; ++i) {
       const Interval& w = e.before[i];
       const double v = valueWithSlack(w, x);
@@ -1012,7 +1034,8 @@ void writeReproducer(const InvariantViolation& v, const std::string& path) {
   };
   out << "before " << v.before.size() << "\n";
   for (const Interval& w : v.before) put("interval", w);
-  put("incoming", v.incoming);
+  // (A run of children, merged by one update, is one incoming line each, in the update's order.)
+  for (const Interval& w : v.incoming) put("incoming", w);
 }
 
 }  // namespace geodex::verify

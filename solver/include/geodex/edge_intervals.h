@@ -196,6 +196,14 @@ class EdgeIntervals {
   void insert(const Interval& incoming, double edgeLength, EdgeUpdateReport& report,
               std::vector<Interval>& scratch);
 
+  /// Algorithm 2 for a run of incoming intervals (each within [0, edgeLength]), in order: steps 1
+  /// and 2 for each on a copy of the slice over all of them, steps 3–5 once, one splice. The list
+  /// afterwards is the pointwise minimum of the list before and every interval of the run, with
+  /// D1–D4 repaired, as after one update per interval (up to where the repairs fall). A run of
+  /// one is insert(). `work` is scratch like `scratch`.
+  void insertRun(std::span<const Interval> run, double edgeLength, EdgeUpdateReport& report,
+                 std::vector<Interval>& scratch, std::vector<Interval>& work);
+
   /// The smallest distance the list gives at x, or +inf where no interval covers x.
   double distanceAt(double x) const;
 

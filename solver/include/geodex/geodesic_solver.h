@@ -133,7 +133,22 @@ class GeodesicSolver {
   void releasePassedEdges(double bound);
   void requireAllLists(const char* what) const;
   void seedSource(const ResolvedPoint& p, std::size_t number);
-  void addInterval(Index edge, const Interval& w, const Fig6Branch* branch);
+  /// A batch's children on one child edge, in the order they were made, with the Fig. 6 leaf and
+  /// the case (its index in the batch) each came from.
+  struct Run {
+    std::vector<Interval> incoming;
+    std::vector<Fig6Branch> branches;
+    std::vector<std::uint32_t> cases;
+    void clear() {
+      incoming.clear();
+      branches.clear();
+      cases.clear();
+    }
+  };
+  void addInterval(Index edge, const Interval& w);
+  void addRun(Index edge, const Run& run);
+  void addBatchRuns(const FaceFrame& fr);
+  void afterUpdate(Index edge);
   void propagateEdgeSide(const QueueEntry& entry, double upTo);
   void queuePending(Index edge, const Interval& w);
   void prefetchAhead() const;
@@ -207,7 +222,11 @@ class GeodesicSolver {
   /// The attached observer's readsIntervalLists(), read once a solve: without it, edge updates do
   /// not copy the list into before_ (EdgeUpdateEvent::before is then empty).
   bool observerReadsLists_ = false;
-  std::vector<Interval> scratch_, before_;
+  std::vector<Interval> scratch_, before_, work_;
+  /// The children of the batch propagateEdgeSide is running, on the face's edges e1 and e2, and
+  /// whether each of its cases is degenerate so far.
+  Run runs_[2];
+  std::vector<std::uint8_t> batchCaseDegenerate_;
   DegeneracyCounters counters_;
   SolveStats stats_;
 };

@@ -15,12 +15,22 @@ namespace geodex {
 
 class GeodesicSolver;
 
+/// An interval a propagation case made for one of the crossed face's other edges.
+struct MadeChild {
+  Index edge;
+  Interval interval;  ///< in that edge's frame, as Algorithm 2 will be given it
+};
+
 struct PropagationEvent {
   Index face;                    ///< the face crossed
   Index edge;                    ///< e0, the window's edge
   const Interval& window;        ///< the window propagated
   const LocalWindow& local;      ///< its local configuration (Fig. 3 frame)
   const LocalPropagation& result;  ///< the Fig. 6 leaf and the children's ranges
+  /// The intervals made of result's children (none for a child whose range came out empty or
+  /// whose edge the rays cannot leave through). They reach their edges when the batch of windows
+  /// is done, in one run per edge (EdgeUpdateEvent::incoming).
+  std::span<const MadeChild> children;
 };
 
 struct EdgeUpdateEvent {
@@ -29,12 +39,16 @@ struct EdgeUpdateEvent {
   /// The edge's list before Algorithm 2; empty for an observer whose readsIntervalLists() is
   /// false (copying it cost 8 % of a solve).
   std::span<const Interval> before;
-  const Interval& incoming;          ///< the new interval
-  std::span<const Interval> after;   ///< the list after steps 1–5
-  const EdgeUpdateReport& report;    ///< Eq. 1 breakpoints, D1–D4 found
-  /// The Fig. 6 leaf that produced the incoming interval (nullptr for source/pseudo-source
-  /// intervals, which come from no propagation case).
-  const Fig6Branch* branch;
+  /// The intervals merged, in the order steps 1 and 2 took them: one source's or pseudo-source's
+  /// window, or the run of children one batch of windows sent to this edge
+  /// (EdgeIntervals::insertRun: steps 1 and 2 for each, steps 3–5 once). The list after is the
+  /// pointwise minimum of the list before and all of them, repaired.
+  std::span<const Interval> incoming;
+  std::span<const Interval> after;  ///< the list after steps 1–5
+  const EdgeUpdateReport& report;   ///< Eq. 1 breakpoints, D1–D4 found
+  /// The Fig. 6 leaf of the case each incoming interval came from, in the same order; empty for a
+  /// source's or pseudo-source's window, which comes from no propagation case.
+  std::span<const Fig6Branch> branches;
 };
 
 /// A window the solver drops before adding it to its edge (the edge-end rule,

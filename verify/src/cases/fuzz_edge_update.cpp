@@ -55,6 +55,8 @@ EdgeUpdateSpec readEdgeUpdateSpec(ByteReader& r) {
   const int count = r.u8() % (kMaxFuzzOldIntervals + 1);
   for (int i = 0; i < count; ++i) s.before.push_back(readIntervalSpec(r));
   s.incoming = readIntervalSpec(r);
+  while (!r.atEnd() && s.laterIncoming.size() < static_cast<std::size_t>(kMaxFuzzRun - 1))
+    s.laterIncoming.push_back(readIntervalSpec(r));
   return s;
 }
 
@@ -69,6 +71,7 @@ std::vector<std::uint8_t> encode(const EdgeUpdateSpec& s) {
   w.u8(static_cast<std::uint8_t>(s.before.size()));
   for (const IntervalSpec& i : s.before) writeIntervalSpec(w, i);
   writeIntervalSpec(w, s.incoming);
+  for (const IntervalSpec& i : s.laterIncoming) writeIntervalSpec(w, i);
   return w.bytes();
 }
 
@@ -131,6 +134,17 @@ std::optional<EdgeUpdateCase> makeEdgeUpdateCase(const EdgeUpdateSpec& s) {
   c.incoming = makeInterval(s.incoming, true, 0.0, L, nL, unit, c.before, ok);
   c.incoming.origin = -2;
   if (!ok) return std::nullopt;
+  // The run's later intervals may take their source or σ from an old interval or an earlier one
+  // of the run (`ref`): children of one batch often share a pseudo-source.
+  std::vector<Interval> earlier = c.before;
+  earlier.push_back(c.incoming);
+  for (const IntervalSpec& is : s.laterIncoming) {
+    Interval w = makeInterval(is, true, 0.0, L, nL, unit, earlier, ok);
+    w.origin = -2;
+    if (!ok) continue;  // (an empty range is no interval of the run)
+    c.laterIncoming.push_back(w);
+    earlier.push_back(w);
+  }
   // Algorithm 2 starts from a list step 6 accepts; a list it rejects tests nothing.
   std::string why;
   if (!InvariantChecker::checkList(c.before, L, why).empty()) return std::nullopt;
@@ -200,8 +214,13 @@ EdgeUpdateCase parseEdgeUpdateReproducer(std::string_view text) {
       w.origin = -1;
       c.before.push_back(w);
     } else if (key == "incoming") {
-      c.incoming = readInterval(ls);
-      c.incoming.origin = -2;
+      Interval w = readInterval(ls);
+      w.origin = -2;
+      if (sawIncoming) {
+        c.laterIncoming.push_back(w);
+      } else {
+        c.incoming = w;
+      }
       sawIncoming = true;
     } else {
       fail("unknown key '" + key + "'");
@@ -217,6 +236,12 @@ EdgeUpdateCase parseEdgeUpdateReproducer(std::string_view text) {
   return c;
 }
 
+std::vector<Interval> incomingRun(const EdgeUpdateCase& c) {
+  std::vector<Interval> run{c.incoming};
+  run.insert(run.end(), c.laterIncoming.begin(), c.laterIncoming.end());
+  return run;
+}
+
 std::optional<EdgeUpdateCase> decodeEdgeUpdate(std::span<const std::uint8_t> bytes) {
   if (isEdgeUpdateReproducer(bytes)) {
     try {
@@ -225,13 +250,13 @@ std::optional<EdgeUpdateCase> decodeEdgeUpdate(std::span<const std::uint8_t> byt
       // An incoming interval off the edge, or one no propagation makes, tests nothing: a
       // negative or non-finite σ, a source off the unfolded side (y < 0) or not finite
       // (regress/*-text-reproducer-with-an-invalid-incoming-interval-was-replayed).
-      if (!(c.edgeLength > 0.0) || !(c.incoming.b0 >= 0.0 && c.incoming.b1 <= c.edgeLength &&
-                                     c.incoming.b0 < c.incoming.b1))
-        return std::nullopt;
-      const Interval& in = c.incoming;
-      if (!(std::isfinite(in.sigma) && in.sigma >= 0.0 && std::isfinite(in.source.x()) &&
-            std::isfinite(in.source.y()) && in.source.y() >= 0.0))
-        return std::nullopt;
+      if (!(c.edgeLength > 0.0)) return std::nullopt;
+      for (const Interval& in : incomingRun(c)) {
+        if (!(in.b0 >= 0.0 && in.b1 <= c.edgeLength && in.b0 < in.b1)) return std::nullopt;
+        if (!(std::isfinite(in.sigma) && in.sigma >= 0.0 && std::isfinite(in.source.x()) &&
+              std::isfinite(in.source.y()) && in.source.y() >= 0.0))
+          return std::nullopt;
+      }
       // As for the binary form: Algorithm 2 starts from a list step 6 accepts; a list it rejects
       // (an interval past the edge's end, two overlapping) tests nothing.
       std::string why;
@@ -272,6 +297,7 @@ std::optional<EdgeUpdateCase> inMeshUnits(const EdgeUpdateCase& c) {
   };
   for (Interval& w : m.before) scale(w);
   scale(m.incoming);
+  for (Interval& w : m.laterIncoming) scale(w);
   if (!exact) return std::nullopt;
   return m;
 }
@@ -291,17 +317,18 @@ Verdict checkEdgeUpdate(const EdgeUpdateCase& input) {
   EdgeIntervals list;
   list.assign(c.before);
   EdgeUpdateReport report;
-  std::vector<Interval> scratch;
+  std::vector<Interval> scratch, work;
+  const std::vector<Interval> run = incomingRun(c);
   auto caseText = [&] {
     std::ostringstream os;
     os << std::setprecision(17) << "\n  edge length " << c.edgeLength;
     for (const Interval& w : c.before) os << "\n  before   " << describeInterval(w);
-    os << "\n  incoming " << describeInterval(c.incoming);
+    for (const Interval& w : run) os << "\n  incoming " << describeInterval(w);
     for (const Interval& w : list.intervals()) os << "\n  after    " << describeInterval(w);
     return os.str();
   };
   try {
-    list.insert(c.incoming, c.edgeLength, report, scratch);
+    list.insertRun(run, c.edgeLength, report, scratch, work);
   } catch (const InternalError& e) {
     return fail(v, "internal-check", e.what() + caseText());
   } catch (const std::exception& e) {
@@ -321,13 +348,14 @@ Verdict checkEdgeUpdate(const EdgeUpdateCase& input) {
   // them inside the solver.
   try {
     InvariantChecker checker(CheckLevel::Full, true);
-    checker.onEdgeUpdate({0, c.edgeLength, c.before, c.incoming, after, report, nullptr});
+    checker.onEdgeUpdate({0, c.edgeLength, c.before, run, after, report, {}});
   } catch (const InvariantViolation& e) {
     return fail(v, e.invariant(), e.what() + caseText());
   }
   // No pseudo-source invented: every interval after is a piece of one of the functions before.
   for (const Interval& w : after) {
-    bool known = sameFunction(w, c.incoming);
+    bool known = false;
+    for (const Interval& in : run) known = known || sameFunction(w, in);
     for (const Interval& b : c.before) known = known || sameFunction(w, b);
     if (!known) return fail(v, "invented-source", "interval " + describeInterval(w) + " has a source no input had" + caseText());
   }
@@ -360,17 +388,18 @@ void describe(const EdgeUpdateCase& c, std::ostream& out) {
   if (!c.note.empty()) out << "# " << c.note << "\n";
   out << "edge-length " << c.edgeLength << "\n";
   for (const Interval& w : c.before) out << "before   " << describeInterval(w) << "\n";
-  out << "incoming " << describeInterval(c.incoming) << "\n";
+  for (const Interval& w : incomingRun(c)) out << "incoming " << describeInterval(w) << "\n";
 }
 
 void writeSvg(const EdgeUpdateCase& c, std::ostream& out) {
   EdgeIntervals list;
   list.assign(c.before);
   EdgeUpdateReport report;
-  std::vector<Interval> scratch;
+  std::vector<Interval> scratch, work;
+  const std::vector<Interval> run = incomingRun(c);
   std::string error;
   try {
-    list.insert(c.incoming, c.edgeLength, report, scratch);
+    list.insertRun(run, c.edgeLength, report, scratch, work);
   } catch (const std::exception& e) {
     error = e.what();
   }
@@ -384,12 +413,12 @@ void writeSvg(const EdgeUpdateCase& c, std::ostream& out) {
     }
   };
   for (const Interval& w : c.before) span(w);
-  span(c.incoming);
+  for (const Interval& w : run) span(w);
   for (const Interval& w : after) span(w);
   SvgDoc doc(900, 900);
   SourceColours colour;
   const char* titles[] = {"before", "incoming", "after Algorithm 2"};
-  const std::vector<Interval> rows[] = {c.before, {c.incoming}, after};
+  const std::vector<Interval> rows[] = {c.before, run, after};
   for (int row = 0; row < 3; ++row) {
     Panel P(60, 50 + row * 180, 820, 150, 0.0, dmin, L, dmax, false);
     doc.line(P, Vec2(0, dmin), Vec2(L, dmin), "#999", 1);
@@ -409,7 +438,7 @@ void writeSvg(const EdgeUpdateCase& c, std::ostream& out) {
   // The edge and the pseudo-sources (drawn below the edge, where they unfold).
   double x0 = 0, x1 = L, y0 = -0.2 * L, y1 = 0.05 * L;
   std::vector<Interval> all = c.before;
-  all.push_back(c.incoming);
+  all.insert(all.end(), run.begin(), run.end());
   for (const Interval& w : all) {
     if (w.source.norm() > 6 * L) continue;
     x0 = std::min(x0, w.source.x()), x1 = std::max(x1, w.source.x()), y0 = std::min(y0, -w.source.y());
@@ -446,13 +475,16 @@ IntervalSpec iv(Q start, Q extent, Q sx, Q sy, Q sigma, std::uint8_t flags = 0, 
 }
 
 /// A seed that must hit every one of `kinds` (Algorithm 2's D1–D4 reports).
-Seed edgeUpdate(const std::string& name, std::initializer_list<K> kinds, int L, std::vector<IntervalSpec> before,
-                IntervalSpec incoming, int unitExp = 0) {
+/// `later`: the rest of a run merged with `incoming` (EdgeIntervals::insertRun).
+Seed edgeUpdate(const std::string& name, std::initializer_list<K> kinds, int L,
+                std::vector<IntervalSpec> before, IntervalSpec incoming, int unitExp = 0,
+                std::vector<IntervalSpec> later = {}) {
   EdgeUpdateSpec s;
   s.unitExp = static_cast<std::int8_t>(unitExp);
   s.edgeLength = n(L);
   s.before = std::move(before);
   s.incoming = incoming;
+  s.laterIncoming = std::move(later);
   return {name, encode(s), [want = std::vector<K>(kinds)](const FuzzCase&, const Verdict& v) {
             return kindsNotHit(v, want);
           }};
@@ -471,87 +503,121 @@ std::vector<Seed> edgeUpdateSeeds() {
   // D1 stands for: a sliver far below them is a distance they lack, and step 3 keeps it.
   const Q justBelow = Q::exact(std::sqrt(20.0) * (1.0 - 1e-13));
   return {
-    edgeUpdate("D1-tiny-sliver-won-by-incoming", {K::D1}, 16, {left, right},
-               iv(n(8), n(8).nudged(2, Nudge::TinyInterval, true), n(8), justBelow, zero)),
-    edgeUpdate("D1-tiny-remainder-of-split-old-interval", {K::D1}, 16, {left, right},
-               iv(n(0), n(8).nudged(-2, Nudge::TinyInterval, true), n(4), n(1), zero)),
-    edgeUpdate("D2-tiny-overlap-at-incoming-start", {K::D2}, 16, {left},
-               iv(n(8).nudged(-3, Nudge::TinyInterval, true), n(16), n(12), n(2), zero)),
-    edgeUpdate("D2-tiny-overlap-at-incoming-end", {K::D2}, 16, {iv(n(8), n(8), n(12), n(2), zero)},
-               iv(n(0), n(8).nudged(3, Nudge::TinyInterval, true), n(4), n(2), zero)),
-    edgeUpdate("D3-tiny-gap-between-neighbours", {K::D3}, 16, {left},
-               iv(n(8).nudged(3, Nudge::TinyInterval, true), n(16), n(12), n(2), zero)),
-    edgeUpdate("D3-tiny-gap-at-edge-start", {K::D3}, 16, {},
-               iv(n(0).nudged(3, Nudge::TinyInterval, true), n(16), n(12), n(2), zero)),
-    edgeUpdate("D3-tiny-gaps-at-both-edge-ends", {K::D3}, 16, {},
-               iv(n(0).nudged(3, Nudge::TinyInterval, true), n(16).nudged(-3, Nudge::TinyInterval, true), n(8),
-                  n(2), zero)),
-    // D4: a pseudo-source near the edge with a large σ against a far one with σ = 0: Eq. 1's
-    // coefficients cancel (c² ~ 1e11) and its root is off (tests/unit/edge_intervals_test.cpp).
-    edgeUpdate("D4-far-source-against-near-source-large-sigma", {K::D4}, 10,
-               {iv(zero, n(10), Q::exact(106679.50483344488).times8(5), Q::exact(350837.94985744485).times8(5), zero)},
-               iv(n(0), n(10), Q::exact(0.02921229530964543), Q::exact(0.031554045793446041),
-                  Q::exact(366698.19360690453).times8(5))),
-    edgeUpdate("D1-tiny-incoming-inside-old-interval", {K::D1}, 16, {left, right},
-               iv(n(8).nudged(2, Nudge::TinyInterval, true), n(8).nudged(4, Nudge::TinyInterval, true), n(8),
-                  Q::exact(1e-3), zero)),
-    edgeUpdate("D2-D3-overlap-one-end-gap-other", {K::D2, K::D3}, 16,
-               {iv(zero, n(4), n(2), n(2), zero), iv(n(8), n(4), n(14), n(2), zero)},
-               iv(n(4).nudged(-3, Nudge::TinyInterval, true), n(12).nudged(-3, Nudge::TinyInterval, true), n(6),
-                  n(2), zero)),
-    // A near window next to a real gap (2e-10, above ε = 1e-10) becomes a D1 sliver of a far
-    // window's ray end (1e6 away: 1e-8) when that window replaces its other neighbour, and goes
-    // to it; the gap, now beside the far window, is below its sewing length and is sewn (D3),
-    // though it lies outside the range the incoming interval reaches
-    // (Algorithm2.AGapBesideTheUpdateIsSewnWhenTheIntervalNextToItGoesToACoarserWindow).
-    edgeUpdate("D1-D3-sliver-beside-the-update-goes-to-a-far-window-and-its-gap-is-sewn", {K::D1, K::D3}, 10,
-               {iv(zero, Q::exact(5.0 - 2e-10), n(2), n(1), Q::exact(999996.8377223398).times8(6)),
-                iv(Q::exact(2e-10), Q::exact(1e-9), n(5), n(2), Q::exact(999998.0).times8(6)),
-                iv(zero, n(10), n(5), n(1), Q::exact(999999.0).times8(6))},
-               iv(Q::exact(5.0 + 1e-9), n(10), n(5), Q::exact(1e6).times8(6), zero)),
-    // Algorithm 2 without degeneracies, for contrast and for the fuzzer to mutate from.
-    edgeUpdate("empty-list-whole-edge", {}, 16, {}, iv(n(0), n(16), n(8), n(4), zero)),
-    edgeUpdate("incoming-wins-everywhere", {}, 16, {iv(zero, n(16), n(8), n(8), n(4), kPropagated)},
-               iv(n(0), n(16), n(8), n(2), zero)),
-    edgeUpdate("incoming-loses-everywhere", {}, 16, {iv(zero, n(16), n(8), n(2), zero, kPropagated)},
-               iv(n(0), n(16), n(8), n(8), n(4))),
-    edgeUpdate("eq1-two-crossings", {}, 16, {iv(zero, n(16), n(8), n(8), zero, kPropagated)},
-               iv(n(0), n(16), n(8), n(1), n(5))),
-    edgeUpdate("eq1-one-crossing-sources-either-side", {}, 16, {iv(zero, n(16), n(0), n(4), zero, kPropagated)},
-               iv(n(0), n(16), n(16), n(4), zero)),
-    edgeUpdate("incoming-fills-gap-between-two", {}, 16,
-               {iv(zero, n(4), n(2), n(2), zero, kPropagated), iv(n(8), n(4), n(14), n(2), zero, kPropagated)},
-               iv(n(2), n(14), n(8), n(3), zero)),
-    edgeUpdate("same-source-arrives-again", {}, 16, {iv(zero, n(16), n(5), n(2), n(1), kPropagated)},
-               iv(n(0), n(16), n(5), n(2), n(1))),
-    edgeUpdate("near-equal-source-merged-by-step5", {}, 16,
-               {iv(zero, n(6), n(5), n(2), n(1), kPropagated)},
-               iv(n(6), n(16), n(0).nudged(2, Nudge::SameSource, true), n(0).nudged(2, Nudge::SameSource, true),
-                  n(0).nudged(2, Nudge::SameSource, true), kRelSource | kRelSigma, 0)),
-    edgeUpdate("tie-equal-distances-different-sources", {}, 16, {iv(zero, n(16), n(4), n(3), n(2), kPropagated)},
-               iv(n(0), n(16), n(4), n(3), n(2), 1)),
-    edgeUpdate("partially-propagated-intervals-split", {}, 16,
-               {iv(zero, n(8), n(4), n(4), zero, kFirstHalf), iv(zero, n(8), n(12), n(4), zero, kSecondHalf)},
-               iv(n(4), n(12), n(8), n(1), n(2))),
-    edgeUpdate("eight-contiguous-intervals", {}, 16,
-               {iv(zero, n(2), n(1), n(1), zero), iv(zero, n(2), n(3), n(1), zero), iv(zero, n(2), n(5), n(1), zero),
-                iv(zero, n(2), n(7), n(1), zero), iv(zero, n(2), n(9), n(1), zero), iv(zero, n(2), n(11), n(1), zero),
-                iv(zero, n(2), n(13), n(1), zero), iv(zero, n(2), n(15), n(1), zero)},
-               iv(n(0), n(16), n(8), n(2), zero)),
-    edgeUpdate("large-sigma-far-sources-scaled-1e+6", {}, 16,
-               {iv(zero, n(16), n(-32).times8(6), n(32).times8(6), zero, kPropagated)},
-               iv(n(0), n(16), n(8), n(2), n(64).times8(5)), 20),
-    edgeUpdate("tiny-edge-scaled-1e-6", {K::D1}, 16, {left, right},
-               iv(n(8), n(8).nudged(2, Nudge::TinyInterval, true), n(8), justBelow, zero), -20),
-    // Algorithm 2 step 1 resolves an overlap below ε (D2) where overlapMeetingPoint says (the
-    // shorter interval keeps a real overlap), not at the midpoint whichever function is smaller
-    // there: at the midpoint this list keeps the larger distance and breaks the pointwise minimum.
-    {.name = "pointwise-min-D2-overlap-midpoint-keeps-larger-distance",
-     .bytes = encode(EdgeUpdateSpec{.edgeLength = n(16),
-                                    .before = {iv(n(0), n(4), n(2), n(2), n(0))},
-                                    .incoming = iv(n(4).nudged(-3, Nudge::TinyInterval, true), n(16), n(8), n(2), n(0))}),
-     .expect = {},
-     .dir = "regress"},
+      edgeUpdate("D1-tiny-sliver-won-by-incoming", {K::D1}, 16, {left, right},
+                 iv(n(8), n(8).nudged(2, Nudge::TinyInterval, true), n(8), justBelow, zero)),
+      edgeUpdate("D1-tiny-remainder-of-split-old-interval", {K::D1}, 16, {left, right},
+                 iv(n(0), n(8).nudged(-2, Nudge::TinyInterval, true), n(4), n(1), zero)),
+      edgeUpdate("D2-tiny-overlap-at-incoming-start", {K::D2}, 16, {left},
+                 iv(n(8).nudged(-3, Nudge::TinyInterval, true), n(16), n(12), n(2), zero)),
+      edgeUpdate("D2-tiny-overlap-at-incoming-end", {K::D2}, 16,
+                 {iv(n(8), n(8), n(12), n(2), zero)},
+                 iv(n(0), n(8).nudged(3, Nudge::TinyInterval, true), n(4), n(2), zero)),
+      edgeUpdate("D3-tiny-gap-between-neighbours", {K::D3}, 16, {left},
+                 iv(n(8).nudged(3, Nudge::TinyInterval, true), n(16), n(12), n(2), zero)),
+      edgeUpdate("D3-tiny-gap-at-edge-start", {K::D3}, 16, {},
+                 iv(n(0).nudged(3, Nudge::TinyInterval, true), n(16), n(12), n(2), zero)),
+      edgeUpdate("D3-tiny-gaps-at-both-edge-ends", {K::D3}, 16, {},
+                 iv(n(0).nudged(3, Nudge::TinyInterval, true),
+                    n(16).nudged(-3, Nudge::TinyInterval, true), n(8), n(2), zero)),
+      // D4: a pseudo-source near the edge with a large σ against a far one with σ = 0: Eq. 1's
+      // coefficients cancel (c² ~ 1e11) and its root is off (tests/unit/edge_intervals_test.cpp).
+      edgeUpdate("D4-far-source-against-near-source-large-sigma", {K::D4}, 10,
+                 {iv(zero, n(10), Q::exact(106679.50483344488).times8(5),
+                     Q::exact(350837.94985744485).times8(5), zero)},
+                 iv(n(0), n(10), Q::exact(0.02921229530964543), Q::exact(0.031554045793446041),
+                    Q::exact(366698.19360690453).times8(5))),
+      edgeUpdate("D1-tiny-incoming-inside-old-interval", {K::D1}, 16, {left, right},
+                 iv(n(8).nudged(2, Nudge::TinyInterval, true),
+                    n(8).nudged(4, Nudge::TinyInterval, true), n(8), Q::exact(1e-3), zero)),
+      edgeUpdate("D2-D3-overlap-one-end-gap-other", {K::D2, K::D3}, 16,
+                 {iv(zero, n(4), n(2), n(2), zero), iv(n(8), n(4), n(14), n(2), zero)},
+                 iv(n(4).nudged(-3, Nudge::TinyInterval, true),
+                    n(12).nudged(-3, Nudge::TinyInterval, true), n(6), n(2), zero)),
+      // A near window next to a real gap (2e-10, above ε = 1e-10) becomes a D1 sliver of a far
+      // window's ray end (1e6 away: 1e-8) when that window replaces its other neighbour, and goes
+      // to it; the gap, now beside the far window, is below its sewing length and is sewn (D3),
+      // though it lies outside the range the incoming interval reaches
+      // (Algorithm2.AGapBesideTheUpdateIsSewnWhenTheIntervalNextToItGoesToACoarserWindow).
+      edgeUpdate(
+          "D1-D3-sliver-beside-the-update-goes-to-a-far-window-and-its-gap-is-sewn", {K::D1, K::D3},
+          10,
+          {iv(zero, Q::exact(5.0 - 2e-10), n(2), n(1), Q::exact(999996.8377223398).times8(6)),
+           iv(Q::exact(2e-10), Q::exact(1e-9), n(5), n(2), Q::exact(999998.0).times8(6)),
+           iv(zero, n(10), n(5), n(1), Q::exact(999999.0).times8(6))},
+          iv(Q::exact(5.0 + 1e-9), n(10), n(5), Q::exact(1e6).times8(6), zero)),
+      // Algorithm 2 without degeneracies, for contrast and for the fuzzer to mutate from.
+      edgeUpdate("empty-list-whole-edge", {}, 16, {}, iv(n(0), n(16), n(8), n(4), zero)),
+      edgeUpdate("incoming-wins-everywhere", {}, 16,
+                 {iv(zero, n(16), n(8), n(8), n(4), kPropagated)},
+                 iv(n(0), n(16), n(8), n(2), zero)),
+      edgeUpdate("incoming-loses-everywhere", {}, 16,
+                 {iv(zero, n(16), n(8), n(2), zero, kPropagated)},
+                 iv(n(0), n(16), n(8), n(8), n(4))),
+      edgeUpdate("eq1-two-crossings", {}, 16, {iv(zero, n(16), n(8), n(8), zero, kPropagated)},
+                 iv(n(0), n(16), n(8), n(1), n(5))),
+      edgeUpdate("eq1-one-crossing-sources-either-side", {}, 16,
+                 {iv(zero, n(16), n(0), n(4), zero, kPropagated)},
+                 iv(n(0), n(16), n(16), n(4), zero)),
+      edgeUpdate("incoming-fills-gap-between-two", {}, 16,
+                 {iv(zero, n(4), n(2), n(2), zero, kPropagated),
+                  iv(n(8), n(4), n(14), n(2), zero, kPropagated)},
+                 iv(n(2), n(14), n(8), n(3), zero)),
+      edgeUpdate("same-source-arrives-again", {}, 16,
+                 {iv(zero, n(16), n(5), n(2), n(1), kPropagated)},
+                 iv(n(0), n(16), n(5), n(2), n(1))),
+      edgeUpdate("near-equal-source-merged-by-step5", {}, 16,
+                 {iv(zero, n(6), n(5), n(2), n(1), kPropagated)},
+                 iv(n(6), n(16), n(0).nudged(2, Nudge::SameSource, true),
+                    n(0).nudged(2, Nudge::SameSource, true),
+                    n(0).nudged(2, Nudge::SameSource, true), kRelSource | kRelSigma, 0)),
+      edgeUpdate("tie-equal-distances-different-sources", {}, 16,
+                 {iv(zero, n(16), n(4), n(3), n(2), kPropagated)},
+                 iv(n(0), n(16), n(4), n(3), n(2), 1)),
+      edgeUpdate("partially-propagated-intervals-split", {}, 16,
+                 {iv(zero, n(8), n(4), n(4), zero, kFirstHalf),
+                  iv(zero, n(8), n(12), n(4), zero, kSecondHalf)},
+                 iv(n(4), n(12), n(8), n(1), n(2))),
+      edgeUpdate("eight-contiguous-intervals", {}, 16,
+                 {iv(zero, n(2), n(1), n(1), zero), iv(zero, n(2), n(3), n(1), zero),
+                  iv(zero, n(2), n(5), n(1), zero), iv(zero, n(2), n(7), n(1), zero),
+                  iv(zero, n(2), n(9), n(1), zero), iv(zero, n(2), n(11), n(1), zero),
+                  iv(zero, n(2), n(13), n(1), zero), iv(zero, n(2), n(15), n(1), zero)},
+                 iv(n(0), n(16), n(8), n(2), zero)),
+      edgeUpdate("large-sigma-far-sources-scaled-1e+6", {}, 16,
+                 {iv(zero, n(16), n(-32).times8(6), n(32).times8(6), zero, kPropagated)},
+                 iv(n(0), n(16), n(8), n(2), n(64).times8(5)), 20),
+      edgeUpdate("tiny-edge-scaled-1e-6", {K::D1}, 16, {left, right},
+                 iv(n(8), n(8).nudged(2, Nudge::TinyInterval, true), n(8), justBelow, zero), -20),
+      // Runs: the children one batch of windows sends to an edge, merged by one update. A later
+      // child meets the earlier ones' pieces as old intervals (steps 1 and 2); steps 3–5 repair
+      // once, after the last.
+      edgeUpdate("run-D2-later-child-overlaps-an-earlier-one-by-a-hair", {K::D2}, 16, {},
+                 iv(n(0), n(8), n(4), n(2), zero), 0,
+                 {iv(n(8).nudged(-3, Nudge::TinyInterval, true), n(16), n(12), n(2), zero)}),
+      edgeUpdate("run-D3-later-child-leaves-a-hair-gap-to-an-earlier-one", {K::D3}, 16, {},
+                 iv(n(0), n(8), n(4), n(2), zero), 0,
+                 {iv(n(8).nudged(3, Nudge::TinyInterval, true), n(16), n(12), n(2), zero)}),
+      edgeUpdate("run-D1-later-child-cuts-a-sliver-off-an-earlier-one", {K::D1}, 16, {},
+                 iv(n(0), n(8), n(4), n(2), zero), 0,
+                 {iv(n(8), n(16), n(12), n(2), zero),
+                  iv(n(0), n(8).nudged(-2, Nudge::TinyInterval, true), n(4), n(1), zero)}),
+      edgeUpdate("run-three-children-of-one-source-joined-by-step5", {}, 16, {},
+                 iv(n(0), n(5), n(8), n(3), zero), 0,
+                 {iv(n(5), n(11), n(8), n(3), zero), iv(n(11), n(16), n(8), n(3), zero)}),
+      edgeUpdate("run-two-crossing-children-over-an-old-window", {}, 16,
+                 {iv(zero, n(16), n(8), n(8), n(4), kPropagated)},
+                 iv(n(0), n(10), n(4), n(2), zero), 0, {iv(n(6), n(16), n(12), n(2), zero)}),
+      // Algorithm 2 step 1 resolves an overlap below ε (D2) where overlapMeetingPoint says (the
+      // shorter interval keeps a real overlap), not at the midpoint whichever function is smaller
+      // there: at the midpoint this list keeps the larger distance and breaks the pointwise
+      // minimum.
+      {.name = "pointwise-min-D2-overlap-midpoint-keeps-larger-distance",
+       .bytes = encode(EdgeUpdateSpec{
+           .edgeLength = n(16),
+           .before = {iv(n(0), n(4), n(2), n(2), n(0))},
+           .incoming = iv(n(4).nudged(-3, Nudge::TinyInterval, true), n(16), n(8), n(2), n(0))}),
+       .expect = {},
+       .dir = "regress"},
   };
 }
 

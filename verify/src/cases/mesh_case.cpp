@@ -58,30 +58,32 @@ std::string describeSoup(const TriangleSoup& soup) {
 
 // ===  The unfolding check =======================================================================
 
-void UnfoldingChecker::checkChild(const EdgeUpdateEvent& e) {
-  const Edge& E = mesh_.edge(edge_);
-  const Edge& C = mesh_.edge(e.edge);
-  const Interval& child = e.incoming;
+void UnfoldingChecker::checkChild(const PropagationEvent& p, const MadeChild& made) {
+  const Index face = p.face, edge = p.edge;
+  const Interval& window = p.window;
+  const Edge& E = mesh_.edge(edge);
+  const Edge& C = mesh_.edge(made.edge);
+  const Interval& child = made.interval;
   auto why = [&] {
     std::ostringstream os;
-    os << std::setprecision(17) << "window " << describeInterval(window_) << " on edge " << edge_
-       << " (" << E.vertex[0] << "-" << E.vertex[1] << ") crossing face " << face_ << " made "
-       << describeInterval(child) << " on edge " << e.edge << " (" << C.vertex[0] << "-"
-       << C.vertex[1] << ") by branch " << name(*e.branch) << ": ";
+    os << std::setprecision(17) << "window " << describeInterval(window) << " on edge " << edge
+       << " (" << E.vertex[0] << "-" << E.vertex[1] << ") crossing face " << face << " made "
+       << describeInterval(child) << " on edge " << made.edge << " (" << C.vertex[0] << "-"
+       << C.vertex[1] << ") by branch " << name(p.result.branch) << ": ";
     return os.str();
   };
-  if (mesh_.localEdgeIndex(face_, e.edge) < 0 || e.edge == edge_)
+  if (mesh_.localEdgeIndex(face, made.edge) < 0 || made.edge == edge)
     throw UnfoldingFailure(why() + "the child is not on another edge of the crossed face");
-  if (child.side != mesh_.sideOf(e.edge, face_))
+  if (child.side != mesh_.sideOf(made.edge, face))
     throw UnfoldingFailure(why() + "the child's source is not on the crossed face's side");
-  if (child.sigma != window_.sigma || child.origin != window_.origin)
+  if (child.sigma != window.sigma || child.origin != window.origin)
     throw UnfoldingFailure(why() + "the child's sigma or origin differs from its parent's");
   // In mesh units, as the intervals are.
   const auto at = [&](Index x) { return mesh_.positionInMeshUnits(x); };
   const Vec3 o = at(E.vertex[0]);
   const Vec3 dir = (at(E.vertex[1]) - o).normalized();
   Index apex = kNoIndex;
-  for (Index x : mesh_.face(face_))
+  for (Index x : mesh_.face(face))
     if (x != E.vertex[0] && x != E.vertex[1]) apex = x;
   const Vec3 rel = at(apex) - o;
   const Vec3 perp = rel - rel.dot(dir) * dir;
@@ -89,11 +91,11 @@ void UnfoldingChecker::checkChild(const EdgeUpdateEvent& e) {
   const double scale = std::max(rel.norm(), E.length);
   if (!(h > 1e-9 * scale)) return;  // zero-area or needle face: no reliable in-plane normal
   const Vec3 n = perp / h;
-  const Vec3 s3 = o + window_.source.x() * dir - window_.source.y() * n;
+  const Vec3 s3 = o + window.source.x() * dir - window.source.y() * n;
   const Vec3 co = at(C.vertex[0]);
   const Vec3 cdir = (at(C.vertex[1]) - co).normalized();
   // The normal's rounding grows as the face gets thinner, and moves s3 by that × |s|.
-  const double amplification = 1e-14 * window_.source.norm() * (rel.norm() / h);
+  const double amplification = 1e-14 * window.source.norm() * (rel.norm() / h);
   // s3 and the sample point are placed in 3D, each to the rounding of its coordinates
   // (tol::kPositionRoundingRel): far from the origin that is more than a small face's
   // unfolding can be checked to
@@ -126,7 +128,7 @@ bool solveChecked(GeodesicSolver& solver, std::span<const SurfacePoint> sources,
     std::ostringstream os;
     os << e.what() << "\n  edge " << e.edge << " length " << fmt(e.edgeLength) << " branch " << e.branch;
     for (const Interval& w : e.before) os << "\n  before   " << describeInterval(w);
-    os << "\n  incoming " << describeInterval(e.incoming);
+    for (const Interval& w : e.incoming) os << "\n  incoming " << describeInterval(w);
     for (const Interval& w : e.after) os << "\n  after    " << describeInterval(w);
     fail(v, e.invariant(), os.str());
   } catch (const UnfoldingFailure& e) {

@@ -35,14 +35,11 @@ class UnfoldingChecker : public SolverObserver {
   std::uint64_t checked = 0;
 
   void onPropagation(const PropagationEvent& e) override {
-    face_ = e.face;
-    edge_ = e.edge;
-    window_ = e.window;
     if (next_) next_->onPropagation(e);
+    for (const MadeChild& child : e.children) checkChild(e, child);
   }
   void onEdgeUpdate(const EdgeUpdateEvent& e) override {
     if (next_) next_->onEdgeUpdate(e);
-    if (e.branch != nullptr) checkChild(e);
   }
   void onWindowDropped(const WindowDroppedEvent& e) override {
     if (next_) next_->onWindowDropped(e);
@@ -52,12 +49,10 @@ class UnfoldingChecker : public SolverObserver {
   }
 
  private:
-  void checkChild(const EdgeUpdateEvent& e);
+  void checkChild(const PropagationEvent& p, const MadeChild& child);
 
   const Mesh& mesh_;
   SolverObserver* next_;
-  Index face_ = kNoIndex, edge_ = kNoIndex;
-  Interval window_;
 };
 
 /// Runs a solve with the observers, turning what they throw into a verdict. False if it failed.

@@ -11,14 +11,13 @@
 //     rest of the list is the same intervals as before (then it holds from the updates that
 //     wrote it); when it is not, or the event does not say, at the whole list.
 //   full tier (adds): the pointwise-min property — the list after the update equals the minimum
-//     of the list before and the incoming interval, sampled along the edge (except inside the
-//     tiny intervals step 3 removed, where a neighbour's values stand in by the paper's
-//     contract, and within the slack step 4 may sew); and at the end,
-//     every edge reached is fully covered, every vertex's distance is the same from all its
-//     edges (the final field is continuous), and no window that has a face to cross is still
-//     pending (the wavefront was exhausted); and every window the solver dropped by the
-//     edge-end rule is nowhere shorter than the final distances, on its edge or in the face it
-//     would have crossed.
+//     of the list before and the incoming interval (or every one of a run), sampled along the edge
+//     (except inside the tiny intervals step 3 removed, where a neighbour's values stand in by the
+//     paper's contract, and within the slack step 4 may sew); and at the end, every edge reached is
+//     fully covered, every vertex's distance is the same from all its edges (the final field is
+//     continuous), and no window that has a face to cross is still pending (the wavefront was
+//     exhausted); and every window the solver dropped by the edge-end rule is nowhere shorter than
+//     the final distances, on its edge or in the face it would have crossed.
 // A violation throws InvariantViolation, which carries everything needed to replay it.
 
 #include <memory>
@@ -43,8 +42,8 @@ class InvariantViolation : public std::runtime_error {
   Index edge = kNoIndex;
   double edgeLength = 0.0;
   std::vector<Interval> before, after;
-  Interval incoming;
-  std::string branch;  ///< the Fig. 6 leaf that made the incoming interval, or "source"
+  std::vector<Interval> incoming;  ///< one, or the run of children the update merged
+  std::string branch;  ///< the Fig. 6 leaf that made the (first) incoming interval, or "source"
 
  private:
   std::string invariant_;

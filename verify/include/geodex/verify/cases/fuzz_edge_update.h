@@ -1,6 +1,7 @@
 #pragma once
-// fuzz_edge_update: one Algorithm 2 update. A valid interval list and an incoming interval →
-// EdgeIntervals::insert: the cheap step-6 invariants and the pointwise minimum (InvariantChecker,
+// fuzz_edge_update: one Algorithm 2 update. A valid interval list and an incoming interval, or a
+// run of them (the bytes after the first) → EdgeIntervals::insert or insertRun: the cheap step-6
+// invariants and the pointwise minimum (InvariantChecker,
 // full tier); no pseudo-source invented; only the slice the update reports is rewritten. Also
 // reads the text reproducers of writeReproducer ("geodex-edge-update 1"). Its libFuzzer main is
 // fuzz/fuzz_edge_update.cpp.
@@ -21,6 +22,8 @@ namespace geodex::verify {
 
 /// The longest list before the update a case may ask for (the fuzzing budget, docs/fuzzing.md).
 inline constexpr int kMaxFuzzOldIntervals = 8;
+/// At most this many incoming intervals merged as one run (EdgeIntervals::insertRun).
+inline constexpr int kMaxFuzzRun = 6;
 
 /// One interval of the bytes.
 struct IntervalSpec {
@@ -33,7 +36,9 @@ struct IntervalSpec {
   /// propagation is); bit 3: source = that of interval `ref` + (sourceX, sourceY) read as
   /// offsets ∈ [−nL, nL]; bit 4: σ = that of interval `ref` + sigma read as an offset ∈ [−nL, nL].
   std::uint8_t flags = 0;
-  std::uint8_t ref = 0;  ///< which earlier old interval (mod their count) bits 3–4 refer to
+  /// Which earlier old interval (mod their count) bits 3–4 refer to; for a run's later incoming
+  /// intervals, the old ones and the run's earlier ones, in that order.
+  std::uint8_t ref = 0;
 };
 
 /// The bytes: an edge's list before Algorithm 2 and the incoming interval. Old intervals are
@@ -44,6 +49,9 @@ struct EdgeUpdateSpec {
   Quantity edgeLength;  ///< L ∈ [1, 64]
   std::vector<IntervalSpec> before;  ///< count byte mod (kMaxFuzzOldIntervals + 1)
   IntervalSpec incoming;
+  /// Any bytes after the incoming interval: more of them, merged with it as one run (at most
+  /// kMaxFuzzRun in all).
+  std::vector<IntervalSpec> laterIncoming;
 };
 
 std::vector<std::uint8_t> encode(const EdgeUpdateSpec& s);
@@ -52,8 +60,14 @@ struct EdgeUpdateCase {
   double edgeLength = 0.0;
   std::vector<Interval> before;  ///< ids 1..n
   Interval incoming;             ///< id n + 1
+  /// A text reproducer of a run update (several incoming lines): the run's other intervals, merged
+  /// after `incoming` by EdgeIntervals::insertRun. Empty for one incoming interval.
+  std::vector<Interval> laterIncoming;
   std::string note;              ///< where it came from (a text reproducer's invariant, branch)
 };
+
+/// The incoming interval and the rest of its run, in order.
+std::vector<Interval> incomingRun(const EdgeUpdateCase& c);
 
 /// The case the bytes describe (binary, or a text reproducer), or nullopt when the target skips
 /// them: too long, an incoming interval no propagation makes, or a list before the update that
