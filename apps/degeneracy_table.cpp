@@ -48,10 +48,8 @@ void writeDegeneracyTable(std::ostream& out, const DegeneracyCounters& counters)
   out << line;
   out << "Fig. 6 degeneracy rate (G1–G5 over all propagation cases, geodex's tolerances): "
       << percent(counters.geometricTotal(), counters.cases) << '\n';
-  // Not the paper's Table 1 reading since a batch's children reach an edge as one run (a repair
-  // in it counts for each of its cases): docs/paper.md.
-  out << "degenerate-case rate (cases with a G1–G5 leaf or a D1–D4 repair in the run their "
-         "children went into, docs/paper.md): "
+  out << "degenerate-case rate (cases with a G1–G5 leaf or a D1–D4 repair at their children; the "
+         "paper's Table 1 read this way, docs/paper.md): "
       << percent(counters.degenerateCases, counters.cases) << '\n';
   out << "mesh-level cases: " << counters.zeroAreaFaces << " windows through zero-area faces, "
       << counters.sourceOnEdgeLineOutside << " with the source on the edge's line outside, "

@@ -8,8 +8,8 @@
 // s on e0, s = b0, s = b1, s b0 v1 collinear, s b1 v1 collinear. It also counts the cases whose
 // window starts or ends at an end of its edge (b0 = v0 or b1 = v2, the coincidence Fig. 6 asks
 // about before G4 and G5). The solver's own counters give G1–G5 at geodex's tolerances, D1–D4,
-// and the degenerate-case rate (a G leaf or a D repair in the run its children went into; since
-// 9a3f4ed not the paper's reading, docs/paper.md).
+// and the degenerate-case rate (a G leaf or a D repair at its children: the paper's reading,
+// docs/paper.md).
 
 #include <cmath>
 #include <cstdio>

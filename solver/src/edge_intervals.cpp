@@ -227,6 +227,7 @@ struct Pieces {
   Interval* data;
   std::size_t size;
   std::size_t capacity;
+  int incomingRuns = 0;  // runs of the incoming interval's pieces (a tie strip needs two)
   void push(const Interval& w) {
     GEODEX_CHECK(size < capacity, "steps 1 and 2 made more than " << capacity << " pieces");
     data[size++] = w;
@@ -540,8 +541,10 @@ namespace {
 // Pieces of the incoming interval carry this flag until the end of the update, so that
 // report.incomingSurvived can tell whether any of it is left.
 constexpr std::uint8_t kFromIncoming = 4;
-// Pieces of an earlier interval of a run (insertRun) while a later one's steps 1 and 2 run.
+// Pieces of an earlier interval of a run (insertRun) while a later one's steps 1 and 2 run, and
+// of all of them in its steps 3–5, which take either flag for a piece of the incoming intervals.
 constexpr std::uint8_t kFromRun = 8;
+constexpr std::uint8_t kFromAnyIncoming = kFromIncoming | kFromRun;
 
 // ===  Steps 1 and 2 ==============================================================================
 // One pass over the slice (the list's intervals [s0, s1), given as `slice`; the first of them
@@ -558,6 +561,7 @@ void splitAndKeepShorter(std::span<const Interval> slice, std::size_t firstReach
   in.flags = static_cast<std::uint8_t>((incoming.flags & Interval::kPending) | Interval::kChanged |
                                        kFromIncoming);
   auto newPiece = [&](double lo, double hi) {  // appends the incoming interval's piece [lo, hi]
+    out.incomingRuns += out.size == 0 || !(out.data[out.size - 1].flags & kFromIncoming);
     out.push(in);
     out.data[out.size - 1].b0 = lo;
     out.data[out.size - 1].b1 = hi;
@@ -777,6 +781,7 @@ bool sewSmallGaps(Slice& s, EdgeUpdateReport& report) {
   Interval& front = L[0];
   if (s.outerPrev == nullptr && sewsAtStart(front, edgeLength)) {
     ++report.degeneracies[DegeneracyKind::D3];
+    report.sewnGaps.emplace_back(0.0, front.b0);
     if (!front.pending()) grewUnpropagated(front);
     setRange(front, 0.0, front.b1);
     sewn = true;
@@ -784,6 +789,7 @@ bool sewSmallGaps(Slice& s, EdgeUpdateReport& report) {
   Interval& back = L[s.m - 1];
   if (s.outerNext == nullptr && sewsAtEnd(back, edgeLength)) {
     ++report.degeneracies[DegeneracyKind::D3];
+    report.sewnGaps.emplace_back(back.b1, edgeLength);
     if (!back.pending()) grewUnpropagated(back);
     setRange(back, back.b0, edgeLength);
     sewn = true;
@@ -802,6 +808,7 @@ bool sewSmallGaps(Slice& s, EdgeUpdateReport& report) {
                                                                     << ", " << p.b1 << "]");
     if (!sewsBetween(p, q, edgeLength)) continue;
     ++report.degeneracies[DegeneracyKind::D3];
+    report.sewnGaps.emplace_back(p.b1, q.b0);
     sewn = true;
     if (p.pending() && !q.pending()) {
       setRange(p, p.b0, q.b0);
@@ -836,7 +843,7 @@ bool mergeSameSources(Slice& s) {
   for (std::size_t r = 0; r < s.m; ++r) {
     if (w > 0 && joins(L[w - 1], L[r], s.edgeLength)) {
       setRange(L[w - 1], L[w - 1].b0, L[r].b1);
-      L[w - 1].flags |= static_cast<std::uint8_t>(L[r].flags & kFromIncoming);
+      L[w - 1].flags |= static_cast<std::uint8_t>(L[r].flags & kFromAnyIncoming);
       if (L[w - 1].source != L[r].source || L[w - 1].sigma != L[r].sigma) functionGrew = true;
       continue;
     }
@@ -890,20 +897,18 @@ void giveTieStripsToTheIncoming(Slice& s, EdgeUpdateReport& report) {
 // function over the piece's range, where it may take a sliver beside it (canTakeSliver) that the
 // piece could not (corpus/fuzz_edge_update/regress/no-tiny-interval-step-5-merge-makes-a-sliver-
 // takeable-after-step-3). Each pass sews or resolves what it finds for good, and steps 3 and 5
-// only remove, so this ends. Returns whether any piece of the incoming interval is left.
-// (`tieStripsGiven`: a run's update gave each child its tie strips as it arrived.)
-bool repairSlice(Slice& s, EdgeUpdateReport& report, bool tieStripsGiven = false) {
+// only remove, so this ends. Returns whether any piece of the incoming interval is left. (The tie
+// strips, which step 2 leaves, are given to the incoming interval before: by updateSlice, or per
+// child of a run as it arrives.)
+bool repairSlice(Slice& s, EdgeUpdateReport& report) {
   // No interval of the slice can be a D1 sliver unless it is shorter than ε at the largest
   // length scale around (tinyLengthBetween takes ε or a ray-end precision, kRayEndRel <=
   // kTinyIntervalRel, of the interval or a neighbour; steps 3–5 move ranges, never sources):
   // most of a solve's intervals are told apart by one comparison.
   double largestScale = s.edgeLength, shortest = s.edgeLength;
-  int incomingRuns = 0;  // runs of the incoming interval's pieces: a tie strip needs two
   for (std::size_t k = 0; k < s.m; ++k) {
     largestScale = std::max(largestScale, intervalLengthScale(s.L[k], s.edgeLength));
     shortest = std::min(shortest, s.L[k].length());
-    incomingRuns +=
-        (s.L[k].flags & kFromIncoming) && (k == 0 || !(s.L[k - 1].flags & kFromIncoming));
   }
   if (s.outerPrev != nullptr)
     largestScale = std::max(largestScale, intervalLengthScale(*s.outerPrev, s.edgeLength));
@@ -914,8 +919,6 @@ bool repairSlice(Slice& s, EdgeUpdateReport& report, bool tieStripsGiven = false
   // now, step 3 finds nothing in any pass.
   const bool mayHaveSlivers = shortest < sliverBound;
 
-  if (incomingRuns >= 2 && !tieStripsGiven) [[unlikely]]
-    giveTieStripsToTheIncoming(s, report);
   for (bool again = true; again;) {
     if (mayHaveSlivers) removeTinyIntervals(s, sliverBound, report);
     const bool sewn = sewSmallGaps(s, report);
@@ -925,8 +928,8 @@ bool repairSlice(Slice& s, EdgeUpdateReport& report, bool tieStripsGiven = false
 
   bool incomingSurvived = false;
   for (std::size_t k = 0; k < s.m; ++k) {
-    if (s.L[k].flags & kFromIncoming) incomingSurvived = true;
-    s.L[k].flags &= static_cast<std::uint8_t>(~kFromIncoming);
+    if (s.L[k].flags & kFromAnyIncoming) incomingSurvived = true;
+    s.L[k].flags &= static_cast<std::uint8_t>(~kFromAnyIncoming);
   }
   return incomingSurvived;
 }
@@ -989,10 +992,12 @@ void updateSlice(IntervalList& edgeList, std::size_t j0, std::size_t j1, const I
   for (;;) {
     // (`out` only grows: resize constructs what it adds.)
     if (out.size() < piecesBound(s1 - s0)) out.resize(piecesBound(s1 - s0));
-    Pieces pieces{out.data(), 0, out.size()};
+    Pieces pieces{out.data(), 0, out.size(), 0};
     splitAndKeepShorter(list.subspan(s0, s1 - s0), j0 - s0, incoming, scan, edgeLength, report,
                         pieces);
     s = sliceOf(pieces.data, pieces.size, list, s0, s1, edgeLength);
+    if (pieces.incomingRuns >= 2) [[unlikely]]
+      giveTieStripsToTheIncoming(s, report);
     report.incomingSurvived = repairSlice(s, report);
     if (outerEndsKeptElseWiden(s, list, s0, s1)) break;
     report.clear();
@@ -1013,6 +1018,79 @@ void updateSlice(IntervalList& edgeList, std::size_t j0, std::size_t j1, const I
 // after the next one cut it or not, a same-source piece is joined after it met the next child
 // (which it does as the one function it is), and a D2 overlap is resolved at the child's ends as
 // it arrives.
+
+// Steps 1 and 2 for the child `in` of a run, on `work`, the run's copy of the list's slice as the
+// children before it left it (their pieces carry kFromRun). `guess` is where the child before it
+// went: a batch's children come along the edge. Returns whether any piece of `in` went in.
+// report.eq1Breakpoints holds the earlier children's breakpoints sorted, and does so after.
+bool runChildStepsOneAndTwo(std::vector<Interval>& work, std::size_t& guess, const Interval& in,
+                            double edgeLength, EdgeUpdateReport& report,
+                            std::vector<Interval>& out) {
+  const std::span<const Interval> w(work);
+  const std::size_t k0 = partitionFrom(w, guess, [&](const Interval& v) { return v.b1 <= in.b0; });
+  guess = k0;
+  const std::size_t k1 = partitionFrom(w, k0, [&](const Interval& v) { return v.b0 < in.b1; });
+  ReachedScan scan;
+  const std::span<const Interval> reached = w.subspan(k0, k1 - k0);
+  if (incomingLosesEverywhere(in, reached, edgeLength, scan)) return false;
+  if (out.size() < piecesBound(reached.size())) out.resize(piecesBound(reached.size()));
+  Pieces pieces{out.data(), 0, out.size(), 0};
+  std::vector<double>& breakpoints = report.eq1Breakpoints;
+  const std::size_t earlier = breakpoints.size();
+  splitAndKeepShorter(reached, 0, in, scan, edgeLength, report, pieces);
+  const std::size_t ownBreakpoints = breakpoints.size() - earlier;
+
+  // An earlier child's Eq. 1 breakpoint that a piece of this one reaches joins other functions
+  // now, which Eq. 1 never made equal: it is no breakpoint any more (corpus/fuzz_edge_update/
+  // regress/continuous-at-eq1-run-breakpoint-of-an-earlier-child-taken-by-a-later-one). Only
+  // those within this child's range can be; kept sorted, they are found by two binary searches
+  // (a run's children all cross their neighbours on a convex surface, and comparing each with every
+  // earlier breakpoint was 1.6 % of the icosphere's solve).
+  const auto reachedByThisChild = [&](double x) {
+    for (std::size_t k = 0; k < pieces.size; ++k)
+      if ((pieces.data[k].flags & kFromIncoming) && pieces.data[k].b0 <= x &&
+          x <= pieces.data[k].b1)
+        return true;
+    return false;
+  };
+  const auto earlierEnd = breakpoints.begin() + static_cast<std::ptrdiff_t>(earlier);
+  const auto from = std::lower_bound(breakpoints.begin(), earlierEnd, in.b0);
+  const auto to = std::upper_bound(from, earlierEnd, in.b1);
+  breakpoints.erase(std::remove_if(from, to, reachedByThisChild), to);
+  // This child's own breakpoints into their places. Before the tie strips, whose pass erases
+  // breakpoints of its own, earlier ones too (corpus/fuzz_edge_update/regress/negative-size-param-
+  // run-tie-strip-erased-an-earlier-childs-breakpoint); an erasure keeps the order.
+  for (std::size_t i = breakpoints.size() - ownBreakpoints; i < breakpoints.size(); ++i) {
+    const double x = breakpoints[i];
+    std::size_t j = i;
+    for (; j > 0 && breakpoints[j - 1] > x; --j) breakpoints[j] = breakpoints[j - 1];
+    breakpoints[j] = x;
+  }
+  // The tie strips between two pieces of this child, before the next child can cut them. The
+  // earlier children's pieces are old intervals to this one, as they would be one update after
+  // another: they carry kFromRun instead of kFromIncoming meanwhile.
+  if (pieces.incomingRuns >= 2) [[unlikely]] {
+    Slice own{pieces.data, pieces.size, nullptr, nullptr, edgeLength};
+    giveTieStripsToTheIncoming(own, report);
+    pieces.size = own.m;
+  }
+  for (std::size_t k = 0; k < pieces.size; ++k)
+    if (pieces.data[k].flags & kFromIncoming)
+      pieces.data[k].flags =
+          static_cast<std::uint8_t>((pieces.data[k].flags & ~kFromIncoming) | kFromRun);
+  const auto at = work.begin() + static_cast<std::ptrdiff_t>(k0);
+  const std::size_t common = std::min(reached.size(), pieces.size);
+  std::copy_n(pieces.data, common, at);
+  if (pieces.size > common) {
+    work.insert(at + static_cast<std::ptrdiff_t>(common), pieces.data + common,
+                pieces.data + pieces.size);
+  } else {
+    work.erase(at + static_cast<std::ptrdiff_t>(common),
+               at + static_cast<std::ptrdiff_t>(reached.size()));
+  }
+  return true;
+}
+
 void updateRunSlice(IntervalList& edgeList, std::size_t j0, std::size_t j1,
                     std::span<const Interval> run, double edgeLength, EdgeUpdateReport& report,
                     std::vector<Interval>& out, std::vector<Interval>& work) {
@@ -1025,79 +1103,23 @@ void updateRunSlice(IntervalList& edgeList, std::size_t j0, std::size_t j1,
     work.assign(list.begin() + static_cast<std::ptrdiff_t>(s0),
                 list.begin() + static_cast<std::ptrdiff_t>(s1));
     bool changed = false;
-    std::size_t guess = 0;  // where the last child went: a batch's children come along the edge
+    std::size_t guess = 0;
     for (const Interval& in : run) {
-      const std::span<const Interval> w(work);
-      const std::size_t k0 =
-          partitionFrom(w, guess, [&](const Interval& v) { return v.b1 <= in.b0; });
-      guess = k0;
-      const std::size_t k1 = partitionFrom(w, k0, [&](const Interval& v) { return v.b0 < in.b1; });
-      ReachedScan scan;
-      const std::span<const Interval> reached = w.subspan(k0, k1 - k0);
-      if (incomingLosesEverywhere(in, reached, edgeLength, scan)) continue;
-      if (out.size() < piecesBound(reached.size())) out.resize(piecesBound(reached.size()));
-      Pieces pieces{out.data(), 0, out.size()};
-      const std::size_t earlierBreakpoints = report.eq1Breakpoints.size();
-      splitAndKeepShorter(reached, 0, in, scan, edgeLength, report, pieces);
-      // An earlier child's Eq. 1 breakpoint that a piece of this one reaches joins other functions
-      // now, which Eq. 1 never made equal: it is no breakpoint any more (corpus/fuzz_edge_update/
-      // regress/continuous-at-eq1-run-breakpoint-of-an-earlier-child-taken-by-a-later-one). This
-      // child's pieces lie within its range, which most earlier breakpoints are outside of. Before
-      // the tie strips, whose pass erases breakpoints of its own (corpus/fuzz_edge_update/regress/
-      // negative-size-param-run-tie-strip-erased-an-earlier-childs-breakpoint).
-      const auto reachedByThisChild = [&](double x) {
-        if (x < in.b0 || x > in.b1) return false;
-        for (std::size_t k = 0; k < pieces.size; ++k)
-          if ((pieces.data[k].flags & kFromIncoming) && pieces.data[k].b0 <= x &&
-              x <= pieces.data[k].b1)
-            return true;
-        return false;
-      };
-      if (earlierBreakpoints > 0) {
-        const auto earlierEnd =
-            report.eq1Breakpoints.begin() + static_cast<std::ptrdiff_t>(earlierBreakpoints);
-        report.eq1Breakpoints.erase(
-            std::remove_if(report.eq1Breakpoints.begin(), earlierEnd, reachedByThisChild),
-            earlierEnd);
-      }
-      // The tie strips between two pieces of this child, before the next child can cut them. The
-      // earlier children's pieces are old intervals to this one, as they would be one update
-      // after another: they carry kFromRun instead of kFromIncoming meanwhile.
-      int incomingRuns = 0;  // (a tie strip needs two)
-      for (std::size_t k = 0; k < pieces.size; ++k)
-        incomingRuns += (pieces.data[k].flags & kFromIncoming) &&
-                        (k == 0 || !(pieces.data[k - 1].flags & kFromIncoming));
-      if (incomingRuns >= 2) [[unlikely]] {
-        Slice own{pieces.data, pieces.size, nullptr, nullptr, edgeLength};
-        giveTieStripsToTheIncoming(own, report);
-        pieces.size = own.m;
-      }
-      for (std::size_t k = 0; k < pieces.size; ++k)
-        if (pieces.data[k].flags & kFromIncoming)
-          pieces.data[k].flags =
-              static_cast<std::uint8_t>((pieces.data[k].flags & ~kFromIncoming) | kFromRun);
-      const auto at = work.begin() + static_cast<std::ptrdiff_t>(k0);
-      const std::size_t common = std::min(reached.size(), pieces.size);
-      std::copy_n(pieces.data, common, at);
-      if (pieces.size > common) {
-        work.insert(at + static_cast<std::ptrdiff_t>(common), pieces.data + common,
-                    pieces.data + pieces.size);
-      } else {
-        work.erase(at + static_cast<std::ptrdiff_t>(common),
-                   at + static_cast<std::ptrdiff_t>(reached.size()));
-      }
-      changed = true;
+      const std::uint64_t repairedBefore =
+          report.degeneracies[DegeneracyKind::D2] + report.degeneracies[DegeneracyKind::D4];
+      changed |= runChildStepsOneAndTwo(work, guess, in, edgeLength, report, out);
+      report.repairedInStepsOneAndTwo.push_back(report.degeneracies[DegeneracyKind::D2] +
+                                                    report.degeneracies[DegeneracyKind::D4] !=
+                                                repairedBefore);
     }
     if (!changed) {  // every child lost everywhere: the list stays as it was
       report.first = j0;
       report.last = j1;
       return;
     }
-    for (Interval& w : work)
-      if (w.flags & kFromRun)
-        w.flags = static_cast<std::uint8_t>((w.flags & ~kFromRun) | kFromIncoming);
+    // (Steps 3–5 take the run's pieces, kFromRun, for the incoming interval's.)
     s = sliceOf(work.data(), work.size(), list, s0, s1, edgeLength);
-    report.incomingSurvived = repairSlice(s, report, true);
+    report.incomingSurvived = repairSlice(s, report);
     if (outerEndsKeptElseWiden(s, list, s0, s1)) break;
     report.clear();
   }
@@ -1305,6 +1327,7 @@ bool sameUpdate(std::span<const Interval> fast, const EdgeUpdateReport& fastRepo
          fastReport.first == generalReport.first && fastReport.last == generalReport.last &&
          fastReport.eq1Breakpoints == generalReport.eq1Breakpoints &&
          fastReport.removedTiny == generalReport.removedTiny &&
+         fastReport.sewnGaps == generalReport.sewnGaps &&
          fastReport.incomingSurvived == generalReport.incomingSurvived &&
          fastReport.fanLostAtVertex == generalReport.fanLostAtVertex &&
          fastReport.degeneracies.count == generalReport.degeneracies.count;

@@ -392,6 +392,9 @@ void GeodesicSolver::propagate(Index edge, const Interval& w, Index f, const Fac
   if (result.branch == Fig6Branch::G1Outside) ++counters_.sourceOnEdgeLineOutside;
 
   const bool oneLine = childEdgesOnOneLine(local);
+  // Each child goes straight into its edge's run (addBatchRuns); an observer is shown them too.
+  const auto caseInBatch = static_cast<std::uint32_t>(batchCaseDegenerate_.size());
+  batchCaseDegenerate_.push_back(kind.has_value());
   std::array<MadeChild, 2> madeChildren;
   std::size_t numMade = 0;
   for (int c = 0; c < result.numChildren; ++c) {
@@ -408,7 +411,13 @@ void GeodesicSolver::propagate(Index edge, const Interval& w, Index f, const Fac
     n.side = static_cast<std::uint8_t>(mesh_.sideOf(ce, f));
     n.origin = w.origin;
     if (CE.face[1 - n.side] == kNoIndex) n.markPropagated();
-    madeChildren[numMade++] = {ce, n};
+    Run& run = runs_[onE1 ? 0 : 1];
+    run.incoming.push_back(n);
+    run.cases.push_back(caseInBatch);
+    if (hooked()) {
+      run.branches.push_back(result.branch);
+      madeChildren[numMade++] = {ce, n};
+    }
   }
   if (hooked())
     observer_->onPropagation(
@@ -424,28 +433,21 @@ void GeodesicSolver::propagate(Index edge, const Interval& w, Index f, const Fac
   if (result.branch == Fig6Branch::G2 || result.branch == Fig6Branch::G3 ||
       result.branch == Fig6Branch::G4 || result.branch == Fig6Branch::G5) [[unlikely]]
     relayFanThroughVertex(fr.apex, counters_.apexFansRelayed);
-
-  const auto caseInBatch = static_cast<std::uint32_t>(batchCaseDegenerate_.size());
-  batchCaseDegenerate_.push_back(kind.has_value());
-  for (std::size_t k = 0; k < numMade; ++k) {
-    Run& run = runs_[madeChildren[k].edge == fr.edgeToV0 ? 0 : 1];
-    run.incoming.push_back(madeChildren[k].interval);
-    run.branches.push_back(result.branch);
-    run.cases.push_back(caseInBatch);
-  }
 }
 
 // Adds each run of the batch's children to its edge (addRun). A case is degenerate when its Fig. 6
-// leaf is G1–G5 or the update its children went into repaired a D1–D4.
+// leaf is G1–G5 or the update repaired a D1–D4 at one of its children (repairedPerIncoming): where
+// its own update would have, had each child been one, not wherever in its batch's run.
 void GeodesicSolver::addBatchRuns(const FaceFrame& fr) {
   for (int k = 0; k < 2; ++k) {
     Run& run = runs_[k];
     if (run.incoming.empty()) continue;
     addRun(k == 0 ? fr.edgeToV0 : fr.edgeToV2, run);
-    DegeneracyCounters found;
-    found += report_.degeneracies;
-    if (found.discontinuityTotal() > 0)
-      for (const std::uint32_t c : run.cases) batchCaseDegenerate_[c] = 1;
+    if (report_.degeneracies.discontinuityTotal() > 0) {
+      repairedPerIncoming(report_, run.incoming, repairedChildren_);
+      for (std::size_t i = 0; i < run.incoming.size(); ++i)
+        if (repairedChildren_[i]) batchCaseDegenerate_[run.cases[i]] = 1;
+    }
     run.clear();
   }
   for (const std::uint8_t degenerate : batchCaseDegenerate_)

@@ -750,8 +750,10 @@ InvariantChecker::PointwiseMinError InvariantChecker::worstPointwiseMinError(
   };
   // Every value the repaired list may take at a sample: one per incoming interval and three of the
   // old list at most.
-  std::vector<double> candidates(e.incoming.size() + 3);
-  std::vector<const Interval*> candidateOf(candidates.size());
+  std::vector<double>& candidates = candidates_;
+  std::vector<const Interval*>& candidateOf = candidateOf_;
+  candidates.resize(e.incoming.size() + 3);
+  candidateOf.resize(candidates.size());
   // Where step 3 removed a D1 sliver, a neighbour grew over it and the gap beside it, one no
   // longer than the sliver at its end by more than the slack (canTakeSliver): with both functions
   // 1-Lipschitz, the list there is above the functions really present by less than the slack and

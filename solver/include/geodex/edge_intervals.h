@@ -38,6 +38,11 @@ struct EdgeUpdateReport {
   /// Ranges of the tiny intervals step 3 removed (D1): there the list takes a neighbour's values
   /// by contract, so the pointwise minimum is not expected to hold inside them.
   std::vector<std::pair<double, double>> removedTiny;
+  /// The gaps step 4 sewed (D3), as they were before: between two neighbours or an edge end.
+  std::vector<std::pair<double, double>> sewnGaps;
+  /// For a run of two or more incoming intervals (EdgeIntervals::insertRun): whether the steps 1
+  /// and 2 of each, in order, repaired a D2 or D4. Empty for a single incoming interval.
+  std::vector<std::uint8_t> repairedInStepsOneAndTwo;
   /// Whether any part of the incoming interval survived.
   bool incomingSurvived = false;
   /// Bit k: step 3 removed, at the edge's vertex k, a D1 sliver that a neighbour of another
@@ -48,11 +53,39 @@ struct EdgeUpdateReport {
     first = last = 0;
     eq1Breakpoints.clear();
     removedTiny.clear();
+    sewnGaps.clear();
+    repairedInStepsOneAndTwo.clear();
     incomingSurvived = false;
     fanLostAtVertex = 0;
     degeneracies = {};
   }
 };
+
+/// For each interval of `incoming` (a run's, EdgeIntervals::insertRun, or one alone), whether the
+/// update `r` repaired a D1–D4 at it, as its own update would have, had each been one: its D2 and
+/// D4 (steps 1 and 2, run per interval), and each D1 sliver removed or D3 gap sewn by the run's one
+/// pass of steps 3–5 charged to the last interval of the run whose range reaches it (one update
+/// after another, the one that met it). One alone is charged every repair of its update. A
+/// propagation case counts as degenerate by this (DegeneracyCounters::degenerateCases).
+inline void repairedPerIncoming(const EdgeUpdateReport& r, std::span<const Interval> incoming,
+                                std::vector<std::uint8_t>& repaired) {
+  repaired.assign(incoming.size(), 0);
+  if (r.repairedInStepsOneAndTwo.empty()) {
+    if (!repaired.empty()) repaired[0] = r.degeneracies.discontinuityTotal() > 0;
+    return;
+  }
+  std::copy(r.repairedInStepsOneAndTwo.begin(), r.repairedInStepsOneAndTwo.end(), repaired.begin());
+  const auto charge = [&](const std::pair<double, double>& range) {
+    for (std::size_t k = incoming.size(); k-- > 0;) {
+      if (range.first <= incoming[k].b1 && range.second >= incoming[k].b0) {
+        repaired[k] = 1;
+        return;
+      }
+    }
+  };
+  for (const auto& range : r.removedTiny) charge(range);
+  for (const auto& range : r.sewnGaps) charge(range);
+}
 
 /// The length the ε of D1–D3 is relative to for interval w on an edge of length L (see
 /// tol::kTinyIntervalRel): the edge length or, when larger, the distance of the pseudo-source.

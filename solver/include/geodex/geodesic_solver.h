@@ -137,7 +137,7 @@ class GeodesicSolver {
   /// the case (its index in the batch) each came from.
   struct Run {
     std::vector<Interval> incoming;
-    std::vector<Fig6Branch> branches;
+    std::vector<Fig6Branch> branches;  ///< (for an observer only: empty without one)
     std::vector<std::uint32_t> cases;
     void clear() {
       incoming.clear();
@@ -227,6 +227,7 @@ class GeodesicSolver {
   /// whether each of its cases is degenerate so far.
   Run runs_[2];
   std::vector<std::uint8_t> batchCaseDegenerate_;
+  std::vector<std::uint8_t> repairedChildren_;  // per child of a run (repairedPerIncoming)
   DegeneracyCounters counters_;
   SolveStats stats_;
 };

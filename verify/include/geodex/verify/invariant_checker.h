@@ -112,8 +112,8 @@ class InvariantChecker : public SolverObserver {
                                               std::span<const Interval> beforeNear,
                                               std::span<const Interval> afterNear, double tiny,
                                               PointwiseMinError& interior);
-  static PointwiseMinError worstPointwiseMinError(const EdgeUpdateEvent& e,
-                                                  std::span<const double> xs, double tiny);
+  PointwiseMinError worstPointwiseMinError(const EdgeUpdateEvent& e, std::span<const double> xs,
+                                           double tiny);
 
   CheckLevel level_;
   bool throw_;
@@ -122,6 +122,10 @@ class InvariantChecker : public SolverObserver {
   // The pointwise-minimum samples, those found besides the walk's, and the endpoints of lists out
   // of order (sorted there), reused between updates.
   std::vector<double> samples_, extraSamples_, ends_;
+  // Every value the repaired list may take at one sample, and the interval each is of
+  // (worstPointwiseMinError), reused between updates.
+  std::vector<double> candidates_;
+  std::vector<const Interval*> candidateOf_;
   // The windows dropped by the edge-end rule in this solve (full tier).
   struct DroppedWindow {
     Index edge;
