@@ -436,17 +436,16 @@ void GeodesicSolver::propagate(Index edge, const Interval& w, Index f, const Fac
 }
 
 // Adds each run of the batch's children to its edge (addRun). A case is degenerate when its Fig. 6
-// leaf is G1–G5 or the update repaired a D1–D4 at one of its children (repairedPerIncoming): where
-// its own update would have, had each child been one, not wherever in its batch's run.
+// leaf is G1–G5 or the update repaired a D1–D4 at one of its children (forEachRepairedIncoming):
+// where its own update would have, had each child been one, not wherever in its batch's run.
 void GeodesicSolver::addBatchRuns(const FaceFrame& fr) {
   for (int k = 0; k < 2; ++k) {
     Run& run = runs_[k];
     if (run.incoming.empty()) continue;
     addRun(k == 0 ? fr.edgeToV0 : fr.edgeToV2, run);
     if (report_.degeneracies.discontinuityTotal() > 0) {
-      repairedPerIncoming(report_, run.incoming, repairedChildren_);
-      for (std::size_t i = 0; i < run.incoming.size(); ++i)
-        if (repairedChildren_[i]) batchCaseDegenerate_[run.cases[i]] = 1;
+      forEachRepairedIncoming(report_, run.incoming,
+                              [&](std::size_t i) { batchCaseDegenerate_[run.cases[i]] = 1; });
     }
     run.clear();
   }

@@ -230,9 +230,10 @@ TEST(DegeneracyCounters, EveryCaseIsReachedByTheTestInputs) {
 }
 
 // A case is degenerate when its Fig. 6 leaf is G1–G5 or when the edge update its children went
-// into (the run of its batch on that edge) repaired a D1–D4 at one of them (repairedPerIncoming);
-// an observer recounts that from the events and must agree with the solver. A batch's cases come
-// first, then its runs: a case is found again by its child, which the run holds as it was made.
+// into (the run of its batch on that edge) repaired a D1–D4 at one of them
+// (forEachRepairedIncoming); an observer recounts that from the events and must agree with the
+// solver. A batch's cases come first, then its runs: a case is found again by its child, which the
+// run holds as it was made.
 class DegenerateCaseRecount : public SolverObserver {
  public:
   void onPropagation(const PropagationEvent& e) override {
@@ -246,8 +247,8 @@ class DegenerateCaseRecount : public SolverObserver {
     DegeneracyCounters d;
     d += e.report.degeneracies;
     if (d.discontinuityTotal() == 0) return;
-    std::vector<std::uint8_t> repaired;
-    repairedPerIncoming(e.report, e.incoming, repaired);
+    std::vector<std::uint8_t> repaired(e.incoming.size(), 0);
+    forEachRepairedIncoming(e.report, e.incoming, [&](std::size_t k) { repaired[k] = 1; });
     for (std::size_t i = 0; i < e.incoming.size(); ++i) {
       if (!repaired[i]) continue;
       for (Case& c : cases_)

@@ -38,9 +38,9 @@ struct DegeneracyCounters {
   /// denominator of the Fig. 6 degeneracy rate.
   std::uint64_t cases = 0;
   /// Cases in which anything degenerate happened: a G1–G5 leaf of Fig. 6, or a D1–D4 repair at
-  /// one of the case's children in the update of its batch's run on that edge (repairedPerIncoming,
-  /// edge_intervals.h). The paper's Sect. 5 rate ("degenerate cases over all the cases") read
-  /// this way is the closest we measure to its Table 1 (docs/paper.md).
+  /// one of the case's children in the update of its batch's run on that edge
+  /// (forEachRepairedIncoming, edge_intervals.h). The paper's Sect. 5 rate ("degenerate cases over
+  /// all the cases") read this way is the closest we measure to its Table 1 (docs/paper.md).
   std::uint64_t degenerateCases = 0;
   /// Mesh-level cases the paper leaves out: windows passed through a zero-area face, and
   /// windows whose source lies on their own edge's line outside the window (their rays run

@@ -61,24 +61,26 @@ struct EdgeUpdateReport {
   }
 };
 
-/// For each interval of `incoming` (a run's, EdgeIntervals::insertRun, or one alone), whether the
-/// update `r` repaired a D1–D4 at it, as its own update would have, had each been one: its D2 and
-/// D4 (steps 1 and 2, run per interval), and each D1 sliver removed or D3 gap sewn by the run's one
-/// pass of steps 3–5 charged to the last interval of the run whose range reaches it (one update
-/// after another, the one that met it). One alone is charged every repair of its update. A
-/// propagation case counts as degenerate by this (DegeneracyCounters::degenerateCases).
-inline void repairedPerIncoming(const EdgeUpdateReport& r, std::span<const Interval> incoming,
-                                std::vector<std::uint8_t>& repaired) {
-  repaired.assign(incoming.size(), 0);
+/// Calls repaired(k) for each interval k of `incoming` (a run's, EdgeIntervals::insertRun, or one
+/// alone) at which the update `r` repaired a D1–D4, as its own update would have, had each been
+/// one: its D2 and D4 (steps 1 and 2, run per interval), and each D1 sliver removed or D3 gap sewn
+/// by the run's one pass of steps 3–5 charged to the last interval of the run whose range reaches
+/// it (one update after another, the one that met it). One alone is charged every repair of its
+/// update. k may come more than once. A propagation case counts as degenerate by this
+/// (DegeneracyCounters::degenerateCases).
+template <typename Repaired>
+void forEachRepairedIncoming(const EdgeUpdateReport& r, std::span<const Interval> incoming,
+                             Repaired&& repaired) {
   if (r.repairedInStepsOneAndTwo.empty()) {
-    if (!repaired.empty()) repaired[0] = r.degeneracies.discontinuityTotal() > 0;
+    if (!incoming.empty() && r.degeneracies.discontinuityTotal() > 0) repaired(std::size_t{0});
     return;
   }
-  std::copy(r.repairedInStepsOneAndTwo.begin(), r.repairedInStepsOneAndTwo.end(), repaired.begin());
+  for (std::size_t k = 0; k < incoming.size(); ++k)
+    if (r.repairedInStepsOneAndTwo[k]) repaired(k);
   const auto charge = [&](const std::pair<double, double>& range) {
     for (std::size_t k = incoming.size(); k-- > 0;) {
       if (range.first <= incoming[k].b1 && range.second >= incoming[k].b0) {
-        repaired[k] = 1;
+        repaired(k);
         return;
       }
     }

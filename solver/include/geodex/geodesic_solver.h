@@ -227,7 +227,6 @@ class GeodesicSolver {
   /// whether each of its cases is degenerate so far.
   Run runs_[2];
   std::vector<std::uint8_t> batchCaseDegenerate_;
-  std::vector<std::uint8_t> repairedChildren_;  // per child of a run (repairedPerIncoming)
   DegeneracyCounters counters_;
   SolveStats stats_;
 };
