@@ -78,6 +78,7 @@ void writeStats(std::ostream& err, const GeodesicSolver& solver, double loadSeco
   put("intervals at end:", std::to_string(s.intervalsAtEnd) + ofKept);
   put("shadows closed:", std::to_string(s.shadowsClosed));
   put("dropped at edge end:", std::to_string(s.windowsDroppedAtEdgeEnd));
+  put("dropped along edge:", std::to_string(s.windowsDroppedAlongEdge));
   put("lists released:",
       std::to_string(s.edgesReleased) +
           (s.releaseUndone ? " (solved again keeping them: a window reached one)" : ""));

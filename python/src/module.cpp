@@ -157,6 +157,7 @@ class Solver {
     s["intervals_at_end"] = st.intervalsAtEnd;
     s["shadows_closed"] = st.shadowsClosed;
     s["windows_dropped_at_edge_end"] = st.windowsDroppedAtEdgeEnd;
+    s["windows_dropped_along_edge"] = st.windowsDroppedAlongEdge;
     const DegeneracyCounters& c = solver_.counters();
     s["cases"] = c.cases;
     s["degenerate_cases"] = c.degenerateCases;  // a G1–G5 leaf or a D1–D4 repair (docs/paper.md)

@@ -475,6 +475,23 @@ double EdgeIntervals::distanceAt(double x) const {
   return best;
 }
 
+// The window grows at slope 1 away from its source, at its edge's start or end, and no interval's
+// distance σ' + |s x| grows faster: an interval no longer than it at its end nearer the source
+// is nowhere longer on its range. Each interval is asked, not the list at the source's end only:
+// the list steps up where a window's range ends, as at a saddle's shadow, which this window fills
+// (SolverRegression.AFaceSourceAHairFromACornerLeavesNoGapDownstream, where the step was 1.3e-9).
+bool EdgeIntervals::nowhereAbove(const Interval& alongEdge, bool fromStart,
+                                 double edgeLength) const {
+  if (list_.empty() || list_.front().b0 != 0.0 || list_.back().b1 != edgeLength) return false;
+  for (std::size_t i = 0; i < list_.size(); ++i) {
+    const Interval& w = list_[i];
+    if (i + 1 < list_.size() && w.b1 != list_[i + 1].b0) return false;  // a gap it would fill
+    const double nearSource = fromStart ? w.b0 : w.b1;
+    if (!(w.distanceAt(nearSource) <= alongEdge.distanceAt(nearSource))) return false;
+  }
+  return true;
+}
+
 std::size_t EdgeIntervals::closeShadows(double widest, double passed) {
   std::size_t closed = 0;
   for (std::size_t k = 0; k + 1 < list_.size(); ++k) {
@@ -987,6 +1004,26 @@ bool outerEndsKeptElseWiden(const Slice& s, std::span<const Interval> list, std:
   return false;
 }
 
+// Steps 3–5 over `s`, the rewritten slice [s0, s1) of `list`. Whether they left its outer ends as
+// they were, so that it can go back; if not, the slice is widened (outerEndsKeptElseWiden) and the
+// report cleared for the update to be done again over it.
+bool repairedWithinTheSlice(Slice& s, std::span<const Interval> list, std::size_t& s0,
+                            std::size_t& s1, EdgeUpdateReport& report) {
+  report.incomingSurvived = repairSlice(s, report);
+  if (outerEndsKeptElseWiden(s, list, s0, s1)) return true;
+  report.clear();
+  return false;
+}
+
+// The repaired slice back into the list in place of [s0, s1), and the range of the list it now
+// holds, for the solver to look at.
+void spliceBack(IntervalList& edgeList, std::size_t s0, std::size_t s1, const Slice& s,
+                EdgeUpdateReport& report) {
+  edgeList.replace(s0, s1, std::span<const Interval>(s.L, s.m));
+  report.first = s0;
+  report.last = s0 + s.m;
+}
+
 // The general update: steps 1–5 over the slice of the old intervals [j0, j1) the incoming range
 // reaches and one neighbour on each side, widened while steps 3–5 change an outer one, spliced
 // back.
@@ -1013,14 +1050,9 @@ void updateSlice(IntervalList& edgeList, std::size_t j0, std::size_t j1, const I
     s = sliceOf(pieces.data, pieces.size, list, s0, s1, edgeLength);
     if (pieces.incomingRuns >= 2) [[unlikely]]
       giveTieStripsToTheIncoming(s, report);
-    report.incomingSurvived = repairSlice(s, report);
-    if (outerEndsKeptElseWiden(s, list, s0, s1)) break;
-    report.clear();
+    if (repairedWithinTheSlice(s, list, s0, s1, report)) break;
   }
-
-  edgeList.replace(s0, s1, std::span<const Interval>(s.L, s.m));
-  report.first = s0;
-  report.last = s0 + s.m;
+  spliceBack(edgeList, s0, s1, s, report);
 }
 
 // ===  A run of incoming intervals ================================================================
@@ -1139,13 +1171,9 @@ void updateRunSlice(IntervalList& edgeList, std::size_t j0, std::size_t j1,
     }
     // (Steps 3–5 take the run's pieces, kFromRun, for the incoming interval's.)
     s = sliceOf(work.data(), work.size(), list, s0, s1, edgeLength);
-    report.incomingSurvived = repairSlice(s, report);
-    if (outerEndsKeptElseWiden(s, list, s0, s1)) break;
-    report.clear();
+    if (repairedWithinTheSlice(s, list, s0, s1, report)) break;
   }
-  edgeList.replace(s0, s1, std::span<const Interval>(s.L, s.m));
-  report.first = s0;
-  report.last = s0 + s.m;
+  spliceBack(edgeList, s0, s1, s, report);
 }
 
 // ===  One reached interval, nothing to repair ====================================================

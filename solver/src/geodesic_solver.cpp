@@ -317,7 +317,7 @@ void GeodesicSolver::createPseudoSourceWindows(Index v, double sigma, std::int32
     w.sigma = sigma;
     w.origin = origin;
     w.markPropagated();
-    addInterval(e, w);
+    if (!dominatedAlongItsEdge(e, w, v)) addInterval(e, w);
   }
 }
 
@@ -716,10 +716,27 @@ bool GeodesicSolver::dominatedAtAnEdgeEnd(Index edge, const Interval& w) {
       longestAtEnd = std::max(longestAtEnd, mesh_.edge(e).length);
     if (!(viaEnd < own - tol::vertexAgreementTolerance(own, E.length, longestAtEnd))) continue;
     ++stats_.windowsDroppedAtEdgeEnd;
-    if (hooked()) observer_->onWindowDropped({edge, E.length, w, a, vertexDistance_[a]});
+    if (hooked())
+      observer_->onWindowDropped({edge, E.length, w, a, vertexDistance_[a], DropRule::EdgeEnd});
     return true;
   }
   return false;
+}
+
+// The along-edge rule: v's window along its own edge, σ + |v x|, is dropped before Algorithm 2
+// where the edge's list already covers the edge and no interval of it is longer than the window
+// (EdgeIntervals::nowhereAbove): Algorithm 2 would keep none of it, after comparing it with every
+// interval of the edge. Already propagated (its rays into either face are the windows on the
+// opposite edges), it leaves nothing beyond the edge. On bunny00 from v:0, this drops 63,404 of
+// the 103,784 windows along a saddle's edges; the rest meet an edge not yet wholly covered, or
+// one that gives v more than σ (another edge brought v its distance).
+bool GeodesicSolver::dominatedAlongItsEdge(Index edge, const Interval& w, Index v) {
+  const Edge& E = mesh_.edge(edge);
+  if (!edges_[edge].nowhereAbove(w, E.vertex[0] == v, E.length)) return false;
+  ++stats_.windowsDroppedAlongEdge;
+  if (hooked())
+    observer_->onWindowDropped({edge, E.length, w, v, vertexDistance_[v], DropRule::AlongEdge});
+  return true;
 }
 
 void GeodesicSolver::updateVertex(Index v, double d) {

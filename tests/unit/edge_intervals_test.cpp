@@ -1292,5 +1292,63 @@ TEST(Eq1, CandidatesIncludeTheBisector) {
   EXPECT_NEAR(roots[0], 5.0, 1e-12);
 }
 
+// The along-edge rule's test (EdgeIntervals::nowhereAbove, GeodesicSolver::dominatedAlongItsEdge):
+// a pseudo-source's window along its own edge is nowhere shorter than a list that covers the edge
+// with no interval longer than it. Each verdict is set against the two functions sampled along
+// the edge.
+namespace along_edge {
+
+// The largest amount by which `along` is shorter than the list anywhere (negative: nowhere).
+double largestWin(const EdgeIntervals& e, const Interval& along) {
+  double largest = -INFINITY;
+  for (int k = 0; k <= 1000; ++k) {
+    const double x = kL * k / 1000.0;
+    largest = std::max(largest, e.distanceAt(x) - along.distanceAt(x));
+  }
+  return largest;
+}
+
+TEST(AlongEdgeRule, AWindowFromEitherEndLosesToAListItsSourceGetsItsDistanceFrom) {
+  Edge1 e;
+  const Interval w = make(0.0, kL, Vec2(2.0, 3.0), 0.0);
+  e.insert(w);
+  const Interval fromStart = make(0.0, kL, Vec2(0.0, 0.0), w.distanceAt(0.0));
+  const Interval fromEnd = make(0.0, kL, Vec2(kL, 0.0), w.distanceAt(kL));
+  EXPECT_LE(largestWin(e.list, fromStart), 0.0);
+  EXPECT_LE(largestWin(e.list, fromEnd), 0.0);
+  EXPECT_TRUE(e.list.nowhereAbove(fromStart, true, kL));
+  EXPECT_TRUE(e.list.nowhereAbove(fromEnd, false, kL));
+}
+
+// The list gives the source its σ, and then steps up where the first window's range ends: the
+// window along the edge is shorter beyond the step, as behind a saddle's shadow.
+TEST(AlongEdgeRule, AListThatStepsUpBeyondTheSourcesEndIsNotNowhereAbove) {
+  Edge1 e;
+  e.insert(make(0.0, 5.0, Vec2(2.0, 3.0), 0.0));
+  e.insert(make(5.0, kL, Vec2(-5.0, 0.0), 0.0));
+  ASSERT_EQ(e.list.intervals().size(), 2u);
+  const Interval fromStart = make(0.0, kL, Vec2(0.0, 0.0), e.list.distanceAt(0.0));
+  EXPECT_GT(largestWin(e.list, fromStart), 1.0);
+  EXPECT_FALSE(e.list.nowhereAbove(fromStart, true, kL));
+}
+
+// A gap inside the list, or an end it does not reach, is the window's to fill.
+TEST(AlongEdgeRule, AListWithAGapOrShortOfAnEndIsNotNowhereAbove) {
+  const Interval near = make(0.0, kL, Vec2(2.0, 3.0), 0.0);
+  const Interval fromStart = make(0.0, kL, Vec2(0.0, 0.0), near.distanceAt(0.0));
+  Edge1 gap;
+  gap.insert(make(0.0, 4.0, near.source, 0.0));
+  gap.insert(make(6.0, kL, near.source, 0.0));
+  ASSERT_EQ(gap.list.intervals().size(), 2u);
+  EXPECT_EQ(gap.list.distanceAt(5.0), INFINITY);
+  EXPECT_FALSE(gap.list.nowhereAbove(fromStart, true, kL));
+  Edge1 shortOfTheEnd;
+  shortOfTheEnd.insert(make(0.0, 9.5, near.source, 0.0));
+  EXPECT_EQ(shortOfTheEnd.list.distanceAt(9.75), INFINITY);
+  EXPECT_FALSE(shortOfTheEnd.list.nowhereAbove(fromStart, true, kL));
+}
+
+}  // namespace along_edge
+
 }  // namespace
 }  // namespace geodex

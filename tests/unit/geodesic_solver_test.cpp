@@ -363,12 +363,10 @@ TEST(SolverApi, TargetsStopEarlyWithTheirDistancesFinal) {
   EXPECT_LT(solver.stats().radius, 1.0);
 }
 
-// The edge-end rule: a pseudo-source's window on the edge across one of its faces is dropped when
-// a path through an end of that edge is already shorter at the window's far end. On a planar grid
-// the boundary vertices are pseudo-sources whose windows into the grid lose to the direct ones
-// there: they are dropped, the full tier samples each against the final distances, and every
-// distance is still the Euclidean one.
-TEST(EdgeEndRule, BoundaryVerticesWindowsIntoAPlanarGridAreDroppedAndEveryDistanceStaysEuclidean) {
+// The solve from a corner of a planar grid with the full tier on: no violation, the tier sampled
+// each dropped window (at least its edge's ends and quarters), and every distance is Euclidean.
+// Returns its stats, for the rule under test to show it dropped windows.
+SolveStats solveAPlanarGridCheckingEachDrop() {
   const TriangleSoup soup = verify::gridMesh(12, 12, 1.0, 1.0);
   const Mesh mesh(soup);
   GeodesicSolver solver(mesh);
@@ -376,15 +374,32 @@ TEST(EdgeEndRule, BoundaryVerticesWindowsIntoAPlanarGridAreDroppedAndEveryDistan
   solver.setObserver(&checker);
   solver.solve(std::vector<SurfacePoint>{SurfacePoint::atVertex(0)});
   if (const auto* v = checker.firstViolation()) ADD_FAILURE() << v->what();
-  EXPECT_GT(solver.stats().windowsDroppedAtEdgeEnd, 0u);
   std::uint64_t sampled = 0;
   for (const auto& t : checker.tallies())
     if (t.name == "dropped-window-dominated") sampled = t.checked;
-  EXPECT_GE(sampled, 5 * solver.stats().windowsDroppedAtEdgeEnd);
+  EXPECT_GE(sampled,
+            5 * (solver.stats().windowsDroppedAtEdgeEnd + solver.stats().windowsDroppedAlongEdge));
   const auto euclid = verify::euclideanDistances(soup.positions, soup.positions[0]);
   for (Index v = 0; v < mesh.numVertices(); ++v)
     EXPECT_NEAR(solver.vertexDistances()[v], euclid[v], 1e-12 * mesh.boundingBoxDiagonal())
         << "vertex " << v;
+  return solver.stats();
+}
+
+// The edge-end rule: a pseudo-source's window on the edge across one of its faces is dropped when
+// a path through an end of that edge is already shorter at the window's far end. On a planar grid
+// the boundary vertices are pseudo-sources whose windows into the grid lose to the direct ones
+// there.
+TEST(EdgeEndRule, BoundaryVerticesWindowsIntoAPlanarGridAreDroppedAndEveryDistanceStaysEuclidean) {
+  EXPECT_GT(solveAPlanarGridCheckingEachDrop().windowsDroppedAtEdgeEnd, 0u);
+}
+
+// The along-edge rule: a pseudo-source's window along one of its own edges is dropped when the
+// edge's list covers it and no interval of it is longer (no distance grows faster along the edge
+// than that window does). The grid's boundary vertices are reached through their edges.
+TEST(AlongEdgeRule,
+     BoundaryVerticesWindowsAlongTheirCoveredEdgesAreDroppedAndEveryDistanceStaysEuclidean) {
+  EXPECT_GT(solveAPlanarGridCheckingEachDrop().windowsDroppedAlongEdge, 0u);
 }
 
 // A target near the source is final after a few windows: the solve stops at the first queue

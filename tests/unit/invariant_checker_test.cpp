@@ -479,7 +479,7 @@ TEST(InvariantChecker, ADroppedWindowShorterThanTheFinalDistancesByMoreThanItsTo
     InvariantChecker fresh(CheckLevel::Full, /*throwOnViolation=*/false);
     Interval dropped = w;
     dropped.sigma -= shorterBy;
-    fresh.onWindowDropped({edge, E.length, dropped, E.vertex[0], 0.0});
+    fresh.onWindowDropped({edge, E.length, dropped, E.vertex[0], 0.0, DropRule::EdgeEnd});
     fresh.onFinish(solver);
     return fresh.firstViolation() != nullptr ? fresh.firstViolation()->invariant() : std::string();
   };

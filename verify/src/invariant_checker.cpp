@@ -886,7 +886,8 @@ void InvariantChecker::checkPointwiseMin(const EdgeUpdateEvent& e, const Changed
 // ===  End of the solve ===========================================================================
 
 void InvariantChecker::onWindowDropped(const WindowDroppedEvent& e) {
-  if (level_ == CheckLevel::Full) dropped_.push_back({e.edge, e.window, e.vertex, e.vertexDistance});
+  if (level_ == CheckLevel::Full)
+    dropped_.push_back({e.edge, e.window, e.vertex, e.vertexDistance, e.rule});
 }
 
 void InvariantChecker::onFinish(const GeodesicSolver& solver) {
@@ -899,12 +900,13 @@ void InvariantChecker::onFinish(const GeodesicSolver& solver) {
 }
 
 // The solver dropped these windows as longer everywhere than a path through an end of their edge
-// (GeodesicSolver::dominatedAtAnEdgeEnd). Whatever the rule's reasoning, the final distances must
-// then be nowhere above them: sampled at the window's ends and quarters against the edge's final
-// list, and on the ray through its middle a quarter of the way into the face the window would have
-// crossed against the solver's distance there (skipped where the ray has left the face). One point
-// there, not three: a face query costs about 2,000 instructions, and three per drop were 0.28 of
-// an unchecked armadillo solve.
+// (GeodesicSolver::dominatedAtAnEdgeEnd) or than the edge's list (a pseudo-source's window along
+// its own edge, GeodesicSolver::dominatedAlongItsEdge). Whatever the rule's reasoning, the final
+// distances must then be nowhere above them: sampled at the window's ends and quarters against the
+// edge's final list, and on the ray through its middle a quarter of the way into the face the
+// window would have crossed against the solver's distance there (skipped where the ray has left the
+// face). One point there, not three: a face query costs about 2,000 instructions, and three per
+// drop were 0.28 of an unchecked armadillo solve.
 void InvariantChecker::checkDroppedWindows(const GeodesicSolver& solver) {
   const Mesh& mesh = solver.mesh();
   for (const DroppedWindow& dw : dropped_) {
@@ -924,9 +926,13 @@ void InvariantChecker::checkDroppedWindows(const GeodesicSolver& solver) {
       if (!ok) {
         std::ostringstream os;
         os << std::setprecision(17) << "window " << describe(w) << " of edge " << dw.edge << " ("
-           << E.vertex[0] << "-" << E.vertex[1] << "), dropped as longer than the path through vertex "
+           << E.vertex[0] << "-" << E.vertex[1] << "), dropped "
+           << (dw.rule == DropRule::EdgeEnd ? "as longer than the path through vertex "
+                                            : "as longer than the edge's list, from vertex ")
            << dw.vertex << " (at " << dw.vertexDistance << "), is " << own
-           << (face == kNoIndex ? " on its edge at x = " : " beyond it in face " + std::to_string(face) + ", on the ray through x = ")
+           << (face == kNoIndex
+                   ? " on its edge at x = "
+                   : " beyond it in face " + std::to_string(face) + ", on the ray through x = ")
            << x << ", where the solve ends at " << got;
         why = os.str();
       }

@@ -242,6 +242,12 @@ class EdgeIntervals {
   /// The smallest distance the list gives at x, or +inf where no interval covers x.
   double distanceAt(double x) const;
 
+  /// Whether the list covers [0, edgeLength] with no gap and no interval of it is longer than
+  /// `alongEdge`, a window whose source lies on the edge at its start (`fromStart`) or its end
+  /// and which spans the edge: Algorithm 2 would keep none of that window
+  /// (GeodesicSolver::dominatedAlongItsEdge).
+  bool nowhereAbove(const Interval& alongEdge, bool fromStart, double edgeLength) const;
+
   /// When the wavefront has passed: closes, at their midpoints, the gaps between neighbours
   /// narrower than `widest` (tol::kShadowSewRel × the bounding-box diagonal) where the distance is
   /// at most `passed` (beyond it the wavefront may not have arrived). Returns how many it closed.

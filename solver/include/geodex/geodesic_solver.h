@@ -55,6 +55,10 @@ struct SolveStats {
   /// Pseudo-source windows dropped before Algorithm 2: a path through an end of their edge is
   /// shorter on all of them (the edge-end rule, GeodesicSolver::dominatedAtAnEdgeEnd).
   std::uint64_t windowsDroppedAtEdgeEnd = 0;
+  /// Pseudo-source windows along the source's own edges dropped before Algorithm 2: the edge's
+  /// list covers it and gives the source no more than σ, so it is nowhere above the window (the
+  /// along-edge rule, GeodesicSolver::dominatedAlongItsEdge).
+  std::uint64_t windowsDroppedAlongEdge = 0;
   /// SolveOptions::vertexDistancesOnly: edges whose list went back to the pool once the wavefront
   /// had passed them, and whether a window reached one after all, so that the solve was done
   /// again keeping every list (the counts above are then the second solve's).
@@ -154,6 +158,7 @@ class GeodesicSolver {
   void prefetchAhead() const;
   void updateVertex(Index v, double d);
   bool dominatedAtAnEdgeEnd(Index edge, const Interval& w);
+  bool dominatedAlongItsEdge(Index edge, const Interval& w, Index v);
   void relayFanThroughVertex(Index v, std::uint64_t& relayed);
   void createPseudoSourceWindows(Index v, double sigma, std::int32_t origin, int depth = 0,
                                  Index from = kNoIndex);

@@ -51,16 +51,25 @@ struct EdgeUpdateEvent {
   std::span<const Fig6Branch> branches;
 };
 
-/// A window the solver drops before adding it to its edge (the edge-end rule,
-/// GeodesicSolver::dominatedAtAnEdgeEnd): a path through `vertex`, an end of the edge, at
-/// `vertexDistance` and then along the edge, is shorter at the window's far end from that vertex,
-/// so the window is longer than a real path everywhere on the edge and beyond it.
+/// Why the solver dropped a window before adding it to its edge.
+enum class DropRule : std::uint8_t {
+  /// GeodesicSolver::dominatedAtAnEdgeEnd: a path through `vertex`, an end of the edge, at
+  /// `vertexDistance` and then along the edge, is shorter at the window's far end from that
+  /// vertex, so the window is longer than a real path everywhere on the edge and beyond it.
+  EdgeEnd,
+  /// GeodesicSolver::dominatedAlongItsEdge: the window of the pseudo-source `vertex` along its
+  /// own edge, where the edge's list covers the edge and gives `vertex` no more than its σ.
+  AlongEdge,
+};
+
+/// A window the solver drops before adding it to its edge (DropRule says by which rule).
 struct WindowDroppedEvent {
   Index edge;
   double edgeLength;
   const Interval& window;  ///< as it would have been added (edge coordinates, side, σ)
-  Index vertex;            ///< the end of the edge whose path is shorter
+  Index vertex;            ///< the end of the edge the rule reasons from
   double vertexDistance;   ///< its distance when the window was dropped (mesh units)
+  DropRule rule;
 };
 
 class SolverObserver {

@@ -126,12 +126,13 @@ class InvariantChecker : public SolverObserver {
   // (worstPointwiseMinError), reused between updates.
   std::vector<double> candidates_;
   std::vector<const Interval*> candidateOf_;
-  // The windows dropped by the edge-end rule in this solve (full tier).
+  // The windows dropped by the edge-end and along-edge rules in this solve (full tier).
   struct DroppedWindow {
     Index edge;
     Interval window;
     Index vertex;
     double vertexDistance;
+    DropRule rule;
   };
   std::vector<DroppedWindow> dropped_;
 };
