@@ -507,7 +507,9 @@ void GeodesicSolver::queuePending(Index edge, const Interval& w) {
 
 // The entries a few places behind the queue's front will want their edge's interval list and
 // edge record: asking for them now hides most of a memory access per batch. Two stages: the
-// list's header for the entry further ahead, the start of the list's data for the nearer one.
+// list's header for the entry further ahead, the start of the list's data for the nearer one, and
+// with it the face the batch crosses (its edges, which frame() searches, and its frames): that
+// search waited on memory for 1.6 % of bunny00's solve, 0.2 % with it.
 void GeodesicSolver::prefetchAhead() const {
   if (const QueueEntry* far = queue_.peek(8); far != nullptr && far->edge != kNoIndex) {
     __builtin_prefetch(&edges_[far->edge]);
@@ -516,6 +518,11 @@ void GeodesicSolver::prefetchAhead() const {
   if (const QueueEntry* near = queue_.peek(4); near != nullptr && near->edge != kNoIndex) {
     const std::span<const Interval> list = edges_[near->edge].intervals();
     if (!list.empty()) __builtin_prefetch(list.data());
+    const Index f = mesh_.edge(near->edge).face[1 - near->which];
+    if (f != kNoIndex) {
+      __builtin_prefetch(&mesh_.faceEdges(f));
+      __builtin_prefetch(&mesh_.frameByLocal(f, 0));
+    }
   }
 }
 
