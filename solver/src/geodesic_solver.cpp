@@ -735,8 +735,9 @@ bool GeodesicSolver::dominatedAtAnEdgeEnd(Index edge, const Interval& w) {
 // (EdgeIntervals::nowhereAbove): Algorithm 2 would keep none of it, after comparing it with every
 // interval of the edge. Already propagated (its rays into either face are the windows on the
 // opposite edges), it leaves nothing beyond the edge. On bunny00 from v:0, this drops 63,404 of
-// the 103,784 windows along a saddle's edges; the rest meet an edge not yet wholly covered, or
-// one that gives v more than σ (another edge brought v its distance).
+// the 103,784 windows along a saddle's edges; the rest meet an edge not yet wholly covered, or a
+// list with an interval longer than the window somewhere (mostly at v, where another edge brought
+// v its distance).
 bool GeodesicSolver::dominatedAlongItsEdge(Index edge, const Interval& w, Index v) {
   const Edge& E = mesh_.edge(edge);
   if (!edges_[edge].nowhereAbove(w, E.vertex[0] == v, E.length)) return false;

@@ -56,8 +56,8 @@ struct SolveStats {
   /// shorter on all of them (the edge-end rule, GeodesicSolver::dominatedAtAnEdgeEnd).
   std::uint64_t windowsDroppedAtEdgeEnd = 0;
   /// Pseudo-source windows along the source's own edges dropped before Algorithm 2: the edge's
-  /// list covers it and gives the source no more than σ, so it is nowhere above the window (the
-  /// along-edge rule, GeodesicSolver::dominatedAlongItsEdge).
+  /// list covers the edge and no interval of it is longer than the window, so it is nowhere above
+  /// it (the along-edge rule, GeodesicSolver::dominatedAlongItsEdge, EdgeIntervals::nowhereAbove).
   std::uint64_t windowsDroppedAlongEdge = 0;
   /// SolveOptions::vertexDistancesOnly: edges whose list went back to the pool once the wavefront
   /// had passed them, and whether a window reached one after all, so that the solve was done

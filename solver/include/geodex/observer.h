@@ -58,7 +58,8 @@ enum class DropRule : std::uint8_t {
   /// vertex, so the window is longer than a real path everywhere on the edge and beyond it.
   EdgeEnd,
   /// GeodesicSolver::dominatedAlongItsEdge: the window of the pseudo-source `vertex` along its
-  /// own edge, where the edge's list covers the edge and gives `vertex` no more than its σ.
+  /// own edge, where the edge's list covers the edge and no interval of it is longer than the
+  /// window (EdgeIntervals::nowhereAbove).
   AlongEdge,
 };
 
