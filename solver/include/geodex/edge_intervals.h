@@ -195,6 +195,7 @@ std::size_t partitionFrom(std::span<const Interval> list, std::size_t guess, Bef
       hi = probe;
     }
   }
+  if (lo == hi) return lo;  // (the guess was next to the answer: a run's children, most searches)
   return static_cast<std::size_t>(
       std::partition_point(list.begin() + static_cast<std::ptrdiff_t>(lo),
                            list.begin() + static_cast<std::ptrdiff_t>(hi), before) -
