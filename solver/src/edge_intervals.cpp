@@ -1069,9 +1069,9 @@ void updateSlice(IntervalList& edgeList, std::size_t j0, std::size_t j1, const I
 
 // A run's copy of the list's slice: the first size() intervals of `storage`, which only grows and
 // keeps its capacity from run to run. A child replaces the intervals it reached by its pieces with
-// one move of what follows them and one copy of the pieces. (std::vector's insert, erase and
-// assign moved an Interval, trivially copyable but not trivial, one at a time wherever the vector
-// grew into its capacity: 2 % of bunny00's solve instructions.)
+// one move of what follows them and one pass that copies the pieces and marks them. (std::vector's
+// insert, erase and assign moved an Interval, trivially copyable but not trivial, one at a time
+// wherever the vector grew into its capacity: 2 % of bunny00's solve instructions.)
 class RunSlice {
  public:
   explicit RunSlice(std::vector<Interval>& storage) : storage_(storage) {}
@@ -1081,13 +1081,20 @@ class RunSlice {
     if (!from.empty()) std::memcpy(storage_.data(), from.data(), from.size() * sizeof(Interval));
     size_ = from.size();
   }
-  // Intervals [k0, k1) replaced by with[0, m) (`with` lies outside the storage).
-  void replace(std::size_t k0, std::size_t k1, const Interval* with, std::size_t m) {
+  // Intervals [k0, k1) replaced by a child's pieces with[0, m) (which lie outside the storage),
+  // the child's own pieces marked as the run's on the way (kFromIncoming becomes kFromRun).
+  void replaceByChildPieces(std::size_t k0, std::size_t k1, const Interval* with, std::size_t m) {
     const std::size_t newSize = size_ - (k1 - k0) + m;
     reserve(newSize);
     Interval* d = storage_.data();
     if (k1 < size_) std::memmove(d + k0 + m, d + k1, (size_ - k1) * sizeof(Interval));
-    if (m > 0) std::memcpy(d + k0, with, m * sizeof(Interval));
+    static_assert(kFromRun == kFromIncoming << 1);
+    for (std::size_t k = 0; k < m; ++k) {
+      Interval& to = d[k0 + k];
+      to = with[k];
+      to.flags = static_cast<std::uint8_t>((to.flags & ~kFromIncoming) |
+                                           ((to.flags & kFromIncoming) << 1));
+    }
     size_ = newSize;
   }
   std::span<const Interval> intervals() const { return {storage_.data(), size_}; }
@@ -1162,11 +1169,7 @@ bool runChildStepsOneAndTwo(RunSlice& work, std::size_t& guess, const Interval& 
     giveTieStripsToTheIncoming(own, report);
     pieces.size = own.m;
   }
-  for (std::size_t k = 0; k < pieces.size; ++k)
-    if (pieces.data[k].flags & kFromIncoming)
-      pieces.data[k].flags =
-          static_cast<std::uint8_t>((pieces.data[k].flags & ~kFromIncoming) | kFromRun);
-  work.replace(k0, k1, pieces.data, pieces.size);
+  work.replaceByChildPieces(k0, k1, pieces.data, pieces.size);
   return true;
 }
 

@@ -406,13 +406,12 @@ void GeodesicSolver::propagate(Index edge, const Interval& w, Index f, const Fac
     const ChildInterval made = childInterval(local, child, {CE.length, CE.vertex[0] == start}, oneLine);
     if (made.outcome == ChildOutcome::SeenFromOutside) ++counters_.childEdgesSeenFromOutside;
     if (made.outcome != ChildOutcome::Made) continue;
-    Interval n = made.interval;
+    Run& run = runs_[onE1 ? 0 : 1];
+    Interval& n = run.incoming.emplace_back(made.interval);
     n.sigma = w.sigma;
     n.side = static_cast<std::uint8_t>(mesh_.sideOf(ce, f));
     n.origin = w.origin;
     if (CE.face[1 - n.side] == kNoIndex) n.markPropagated();
-    Run& run = runs_[onE1 ? 0 : 1];
-    run.incoming.push_back(n);
     run.cases.push_back(caseInBatch);
     if (hooked()) {
       run.branches.push_back(result.branch);
