@@ -615,7 +615,8 @@ std::vector<Seed> edgeUpdateSeeds() {
        .bytes = encode(EdgeUpdateSpec{
            .edgeLength = n(16),
            .before = {iv(n(0), n(4), n(2), n(2), n(0))},
-           .incoming = iv(n(4).nudged(-3, Nudge::TinyInterval, true), n(16), n(8), n(2), n(0))}),
+           .incoming = iv(n(4).nudged(-3, Nudge::TinyInterval, true), n(16), n(8), n(2), n(0)),
+           .laterIncoming = {}}),
        .expect = {},
        .dir = "regress"},
   };
