@@ -4,7 +4,6 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 
 #include "geodex/check.h"
 #include "geodex/tolerance.h"
@@ -1067,56 +1066,23 @@ void updateSlice(IntervalList& edgeList, std::size_t j0, std::size_t j1, const I
 // (which it does as the one function it is), and a D2 overlap is resolved at the child's ends as
 // it arrives.
 
-// A run's copy of the list's slice: the first size() intervals of `storage`, which only grows and
-// keeps its capacity from run to run. A child replaces the intervals it reached by its pieces with
-// one move of what follows them and one pass that copies the pieces and marks them. (std::vector's
-// insert, erase and assign moved an Interval, trivially copyable but not trivial, one at a time
-// wherever the vector grew into its capacity: 2 % of bunny00's solve instructions.)
-class RunSlice {
- public:
-  explicit RunSlice(std::vector<Interval>& storage) : storage_(storage) {}
-
-  void assign(std::span<const Interval> from) {
-    reserve(from.size());
-    if (!from.empty()) std::memcpy(storage_.data(), from.data(), from.size() * sizeof(Interval));
-    size_ = from.size();
-  }
-  // Intervals [k0, k1) replaced by a child's pieces with[0, m) (which lie outside the storage),
-  // the child's own pieces marked as the run's on the way (kFromIncoming becomes kFromRun).
-  void replaceByChildPieces(std::size_t k0, std::size_t k1, const Interval* with, std::size_t m) {
-    const std::size_t newSize = size_ - (k1 - k0) + m;
-    reserve(newSize);
-    Interval* d = storage_.data();
-    if (k1 < size_) std::memmove(d + k0 + m, d + k1, (size_ - k1) * sizeof(Interval));
-    static_assert(kFromRun == kFromIncoming << 1);
-    for (std::size_t k = 0; k < m; ++k) {
-      Interval& to = d[k0 + k];
-      to = with[k];
-      to.flags = static_cast<std::uint8_t>((to.flags & ~kFromIncoming) |
-                                           ((to.flags & kFromIncoming) << 1));
-    }
-    size_ = newSize;
-  }
-  std::span<const Interval> intervals() const { return {storage_.data(), size_}; }
-  Interval* data() { return storage_.data(); }
-  std::size_t size() const { return size_; }
-
- private:
-  void reserve(std::size_t n) {
-    if (storage_.size() < n) storage_.resize(std::max(n, 2 * storage_.size()));
-  }
-  std::vector<Interval>& storage_;
-  std::size_t size_ = 0;
-};
+// A child's piece, copied into the run's copy of the slice, becomes the run's to the children after
+// it: kFromIncoming becomes kFromRun. (Branch-free: which of the pieces are the child's own and
+// which are pieces of old intervals varies piece by piece.)
+void markAsTheRuns(Interval& w) {
+  static_assert(kFromRun == kFromIncoming << 1);
+  w.flags =
+      static_cast<std::uint8_t>((w.flags & ~kFromIncoming) | ((w.flags & kFromIncoming) << 1));
+}
 
 // Steps 1 and 2 for the child `in` of a run, on `work`, the run's copy of the list's slice as the
 // children before it left it (their pieces carry kFromRun). `guess` is where the child before it
 // went: a batch's children come along the edge. Returns whether any piece of `in` went in.
 // report.eq1Breakpoints holds the earlier children's breakpoints sorted, and does so after.
-bool runChildStepsOneAndTwo(RunSlice& work, std::size_t& guess, const Interval& in,
+bool runChildStepsOneAndTwo(IntervalList& work, std::size_t& guess, const Interval& in,
                             double edgeLength, EdgeUpdateReport& report,
                             std::vector<Interval>& out) {
-  const std::span<const Interval> w = work.intervals();
+  const std::span<const Interval> w(work);
   const std::size_t k0 = partitionFrom(w, guess, [&](const Interval& v) { return v.b1 <= in.b0; });
   guess = k0;
   const std::size_t k1 = partitionFrom(w, k0, [&](const Interval& v) { return v.b0 < in.b1; });
@@ -1169,15 +1135,14 @@ bool runChildStepsOneAndTwo(RunSlice& work, std::size_t& guess, const Interval& 
     giveTieStripsToTheIncoming(own, report);
     pieces.size = own.m;
   }
-  work.replaceByChildPieces(k0, k1, pieces.data, pieces.size);
+  work.replace(k0, k1, {pieces.data, pieces.size}, markAsTheRuns);
   return true;
 }
 
 void updateRunSlice(IntervalList& edgeList, std::size_t j0, std::size_t j1,
                     std::span<const Interval> run, double edgeLength, EdgeUpdateReport& report,
-                    std::vector<Interval>& out, std::vector<Interval>& storage) {
+                    std::vector<Interval>& out, IntervalList& work) {
   const std::span<const Interval> list(edgeList);
-  RunSlice work(storage);
   // The slice as updateSlice takes it: the children's range and a neighbour on each side, widened
   // while steps 3–5 change an outer one.
   std::size_t s0 = j0 >= 1 ? j0 - 1 : 0, s1 = std::min(list.size(), j1 + 1);
@@ -1457,7 +1422,7 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
 
 void EdgeIntervals::insertRun(std::span<const Interval> run, double edgeLength,
                               EdgeUpdateReport& report, std::vector<Interval>& out,
-                              std::vector<Interval>& work) {
+                              IntervalList& work) {
   if (run.size() == 1) {
     insert(run.front(), edgeLength, report, out);
     return;

@@ -208,26 +208,18 @@ void IntervalList::assign(std::span<const Interval> list) {
   size_ = list.size();
 }
 
-void IntervalList::replace(std::size_t s0, std::size_t s1, std::span<const Interval> with) {
-  const std::size_t newSize = size_ - (s1 - s0) + with.size();
-  if (newSize > capacity_) {
-    // To the next size class, a quarter up, not a doubling: the lists are most of the solver's
-    // memory. (A list grows at six in ten of fandisk's updates.)
-    const std::size_t capacity = IntervalPool::capacityFor(newSize);
-    Interval* const block = allocate(capacity);
-    copyRun(block, data_, s0);
-    copyRun(block + s0, with.data(), with.size());
-    copyRun(block + s0 + with.size(), data_ + s1, size_ - s1);
-    release();
-    data_ = block;
-    capacity_ = capacity;
-  } else {
-    if (with.size() != s1 - s0) {  // the tail moves (memmove: the two runs may overlap)
-      std::memmove(static_cast<void*>(data_ + s0 + with.size()), data_ + s1,
-                   (size_ - s1) * sizeof(Interval));
-    }
-    copyRun(data_ + s0, with.data(), with.size());
-  }
+void IntervalList::replaceIntoALargerBlock(std::size_t s0, std::size_t s1,
+                                           std::span<const Interval> with, std::size_t newSize) {
+  // To the next size class, a quarter up, not a doubling: the lists are most of the solver's
+  // memory. (A list grows at six in ten of fandisk's updates.)
+  const std::size_t capacity = IntervalPool::capacityFor(newSize);
+  Interval* const block = allocate(capacity);
+  copyRun(block, data_, s0);
+  copyRun(block + s0, with.data(), with.size());
+  copyRun(block + s0 + with.size(), data_ + s1, size_ - s1);
+  release();
+  data_ = block;
+  capacity_ = capacity;
   size_ = newSize;
 }
 

@@ -41,7 +41,8 @@ std::string describeList(std::span<const Interval> list) {
 DegeneracyCounters runAndCheck(const IntervalListCase& c, std::size_t runFrom) {
   EdgeIntervals list;
   EdgeUpdateReport report;
-  std::vector<Interval> scratch, work, before;
+  std::vector<Interval> scratch, before;
+  IntervalList work;
   verify::InvariantChecker checker(verify::CheckLevel::Full, /*throwOnViolation=*/true);
   DegeneracyCounters found;
   for (std::size_t i = 0; i < c.inserts.size();) {

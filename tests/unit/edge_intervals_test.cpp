@@ -33,7 +33,7 @@ struct Edge1 {
   EdgeUpdateReport report;
   std::vector<Interval> scratch;
   DegeneracyCounters total;
-  std::vector<Interval> work;
+  IntervalList work;
   void insert(const Interval& w) {
     list.insert(w, kL, report, scratch);
     total += report.degeneracies;
@@ -356,7 +356,8 @@ TEST(Algorithm2, ATieStripPassInARunMayEraseAnEarlierChildsBreakpoint) {
   const double length = 1048575.9999934464;
   EdgeIntervals list;
   EdgeUpdateReport report;
-  std::vector<Interval> scratch, work;
+  std::vector<Interval> scratch;
+  IntervalList work;
   const std::vector<Interval> run = {make(0.0, 1024.0, Vec2(512.0, 0.0), 0.0),
                                      make(0.0, length, Vec2(0.0001677721599989514, 0.5), 0.0),
                                      make(0.0, 1048320.5, Vec2(0.0, 2.0971519999868925e-05), 0.0),

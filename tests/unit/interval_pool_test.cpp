@@ -77,14 +77,17 @@ Interval numbered(int k) {
 bool sameList(std::span<const Interval> list, const std::vector<Interval>& expected) {
   if (list.size() != expected.size()) return false;
   for (std::size_t i = 0; i < list.size(); ++i)
-    if (list[i].b0 != expected[i].b0 || list[i].origin != expected[i].origin) return false;
+    if (list[i].b0 != expected[i].b0 || list[i].origin != expected[i].origin ||
+        list[i].regrown != expected[i].regrown)
+      return false;
   return true;
 }
 
 // The splice every edge update ends with: whatever the slice and whatever replaces it (fewer,
 // as many, more; at the front, inside, at the back; growing past the block or not), the list is
 // the old one with the slice cut out and the new intervals put in its place, in order, in a
-// block of the smallest size class that held the list at its longest.
+// block of the smallest size class that held the list at its longest. Every other step touches
+// the intervals it copies in (as a run's update marks its children's pieces), and only those.
 TEST(IntervalList, AReplacedSliceLeavesTheRestOfTheListInOrderAroundTheNewIntervals) {
   IntervalPool pool;
   std::mt19937 random(7);
@@ -101,7 +104,13 @@ TEST(IntervalList, AReplacedSliceLeavesTheRestOfTheListInOrderAroundTheNewInterv
         const std::size_t s1 = s0 + random() % (n - s0 + 1);
         std::vector<Interval> with(random() % 5);
         for (Interval& w : with) w = numbered(next++);
-        list.replace(s0, s1, with);
+        const bool touching = step % 2 == 1;
+        if (touching) {
+          list.replace(s0, s1, with, [](Interval& w) { ++w.regrown; });
+          for (Interval& w : with) ++w.regrown;
+        } else {
+          list.replace(s0, s1, with);
+        }
         expected.erase(expected.begin() + static_cast<std::ptrdiff_t>(s0),
                        expected.begin() + static_cast<std::ptrdiff_t>(s1));
         expected.insert(expected.begin() + static_cast<std::ptrdiff_t>(s0), with.begin(),

@@ -238,9 +238,10 @@ class EdgeIntervals {
   /// and 2 for each on a copy of the slice over all of them, steps 3–5 once, one splice. The list
   /// afterwards is the pointwise minimum of the list before and every interval of the run, with
   /// D1–D4 repaired, as after one update per interval (up to where the repairs fall). A run of
-  /// one is insert(). `work` is scratch like `scratch`.
+  /// one is insert(). `work` is scratch like `scratch` (a list without a pool: the copy of the
+  /// slice the run's children update one after another).
   void insertRun(std::span<const Interval> run, double edgeLength, EdgeUpdateReport& report,
-                 std::vector<Interval>& scratch, std::vector<Interval>& work);
+                 std::vector<Interval>& scratch, IntervalList& work);
 
   /// The smallest distance the list gives at x, or +inf where no interval covers x.
   double distanceAt(double x) const;

@@ -227,7 +227,8 @@ class GeodesicSolver {
   /// The attached observer's readsIntervalLists(), read once a solve: without it, edge updates do
   /// not copy the list into before_ (EdgeUpdateEvent::before is then empty).
   bool observerReadsLists_ = false;
-  std::vector<Interval> scratch_, before_, work_;
+  std::vector<Interval> scratch_, before_;
+  IntervalList work_;  // (EdgeIntervals::insertRun's copy of a slice)
   /// The children of the batch propagateEdgeSide is running, on the face's edges e1 and e2, and
   /// whether each of its cases is degenerate so far.
   Run runs_[2];

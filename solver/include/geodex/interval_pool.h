@@ -12,6 +12,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <memory>
 #include <new>
 #include <span>
@@ -99,10 +100,35 @@ class IntervalList {
   /// The list becomes a copy of `list` (which must not be part of it).
   void assign(std::span<const Interval> list);
   /// Replaces the intervals [s0, s1) by `with` (which must not be part of the list), moving the
-  /// tail once. A list that must grow is built in a block of the next size class directly.
-  void replace(std::size_t s0, std::size_t s1, std::span<const Interval> with);
+  /// tail once, and calls touch(w) on each interval w copied in (a run's update marks its pieces on
+  /// the way). A list that must grow is built in a block of the next size class directly.
+  template <class Touch = void (*)(Interval&)>
+  void replace(
+      std::size_t s0, std::size_t s1, std::span<const Interval> with,
+      Touch touch = [](Interval&) {}) {
+    const std::size_t newSize = size_ - (s1 - s0) + with.size();
+    Interval* to = data_ + s0;
+    if (newSize > capacity_) {
+      replaceIntoALargerBlock(s0, s1, with, newSize);
+      for (Interval& w : std::span<Interval>(data_ + s0, with.size())) touch(w);
+      return;
+    }
+    if (with.size() != s1 - s0) {  // the tail moves (memmove: the two runs may overlap)
+      std::memmove(static_cast<void*>(to + with.size()), data_ + s1,
+                   (size_ - s1) * sizeof(Interval));
+    }
+    // One to a few intervals as a rule, the pieces of an update: copied inline, where a call to
+    // memcpy cost more than the copy.
+    for (const Interval& w : with) {
+      *to = w;
+      touch(*to++);
+    }
+    size_ = newSize;
+  }
 
  private:
+  void replaceIntoALargerBlock(std::size_t s0, std::size_t s1, std::span<const Interval> with,
+                               std::size_t newSize);
   Interval* allocate(std::size_t capacity);
   void release();
   void take(IntervalList& o) noexcept;

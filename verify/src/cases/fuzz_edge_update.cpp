@@ -317,7 +317,8 @@ Verdict checkEdgeUpdate(const EdgeUpdateCase& input) {
   EdgeIntervals list;
   list.assign(c.before);
   EdgeUpdateReport report;
-  std::vector<Interval> scratch, work;
+  std::vector<Interval> scratch;
+  IntervalList work;
   const std::vector<Interval> run = incomingRun(c);
   auto caseText = [&] {
     std::ostringstream os;
@@ -395,7 +396,8 @@ void writeSvg(const EdgeUpdateCase& c, std::ostream& out) {
   EdgeIntervals list;
   list.assign(c.before);
   EdgeUpdateReport report;
-  std::vector<Interval> scratch, work;
+  std::vector<Interval> scratch;
+  IntervalList work;
   const std::vector<Interval> run = incomingRun(c);
   std::string error;
   try {
