@@ -1109,10 +1109,12 @@ bool runChildStepsOneAndTwo(IntervalList& work, std::size_t& guess, const Interv
         return true;
     return false;
   };
-  const auto earlierEnd = breakpoints.begin() + static_cast<std::ptrdiff_t>(earlier);
-  const auto from = std::lower_bound(breakpoints.begin(), earlierEnd, in.b0);
-  const auto to = std::upper_bound(from, earlierEnd, in.b1);
-  breakpoints.erase(std::remove_if(from, to, reachedByThisChild), to);
+  if (earlier > 0) {  // (searching and erasing over none was 0.9 % of bunny00's solve instructions)
+    const auto earlierEnd = breakpoints.begin() + static_cast<std::ptrdiff_t>(earlier);
+    const auto from = std::lower_bound(breakpoints.begin(), earlierEnd, in.b0);
+    const auto to = std::upper_bound(from, earlierEnd, in.b1);
+    breakpoints.erase(std::remove_if(from, to, reachedByThisChild), to);
+  }
   // This child's own breakpoints into their places, each found by a binary search and the ones
   // after it moved up at once (children come along the edge either way round: moved one by one,
   // those of a run coming backwards cost 1.2 % of the icosphere's solve). Before the tie strips,
