@@ -9,6 +9,7 @@
 
 #include "geodex/error.h"
 #include "geodex/tolerance.h"
+#include "sort_sides.h"
 
 namespace geodex {
 namespace {
@@ -139,9 +140,11 @@ void Mesh::buildEdges() {
       half.push_back({a, b, f, k});
     }
   }
-  std::sort(half.begin(), half.end(), [](const HalfEdge& x, const HalfEdge& y) {
-    return x.a != y.a ? x.a < y.a : (x.b != y.b ? x.b < y.b : x.face < y.face);
-  });
+  detail::sortSidesByVertexPair(
+      half, soup_.positions.size(), [](const HalfEdge& h) { return h.a; },
+      [](const HalfEdge& x, const HalfEdge& y) {
+        return x.a != y.a ? x.a < y.a : (x.b != y.b ? x.b < y.b : x.face < y.face);
+      });
   faceEdges_.assign(nf, {kNoIndex, kNoIndex, kNoIndex});
   std::size_t numEdges = 0;  // (reserved: one allocation, not one per doubling)
   for (std::size_t i = 0; i < half.size(); ++i)

@@ -2,6 +2,7 @@
 // what the report calls its finding: the rule zeroAreaFace reports "zero-area-face", and
 // `geodex info` lists it as "warning: [zero-area-face] ...".
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <array>
 #include <cstdint>
@@ -12,8 +13,7 @@
 #include <utility>
 #include <vector>
 
-#include <Eigen/Geometry>
-
+#include "../sort_sides.h"
 #include "geodex/mesh_io.h"
 #include "geodex/tolerance.h"
 #include "text_input.h"
@@ -253,9 +253,11 @@ SoupFacts::SoupFacts(const TriangleSoup& soup)
       sides.push_back({key, static_cast<Index>(f), static_cast<std::uint8_t>(k), a < b});
     }
   }
-  std::sort(sides.begin(), sides.end(), [](const HalfEdge& x, const HalfEdge& y) {
-    return x.key != y.key ? x.key < y.key : x.face < y.face;
-  });
+  detail::sortSidesByVertexPair(
+      sides, numVertices, [](const HalfEdge& h) { return smallerVertex(h.key); },
+      [](const HalfEdge& x, const HalfEdge& y) {
+        return x.key != y.key ? x.key < y.key : x.face < y.face;
+      });
 }
 
 /// Calls visit(begin, end) for each edge of the usable faces, whose sides are
