@@ -2,7 +2,6 @@
 // what the report calls its finding: the rule zeroAreaFace reports "zero-area-face", and
 // `geodex info` lists it as "warning: [zero-area-face] ...".
 
-#include <Eigen/Geometry>
 #include <algorithm>
 #include <array>
 #include <cstdint>
@@ -12,6 +11,8 @@
 #include <string>
 #include <utility>
 #include <vector>
+
+#include <Eigen/Geometry>
 
 #include "../sort_sides.h"
 #include "geodex/mesh_io.h"
