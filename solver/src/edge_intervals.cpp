@@ -208,6 +208,24 @@ bool incomingLosesEverywhere(const Interval& in, std::span<const Interval> reach
   return cursor >= in.b1;
 }
 
+// `in` lost everywhere to the intervals `reached` (incomingLosesEverywhere). When it is a sliver
+// (shorter than its D1 threshold beside them) ending at a vertex, where another source's interval
+// beat it, its rays beyond the vertex can fan out wider than the winner's: the update reports the
+// fan lost there, and the solver has the vertex relay it, as for a sliver step 3 removes there
+// (removeTinyIntervals). Whether the sliver came before the winner (and step 3 removed it) or
+// after (and lost outright) was the order of arrival's: a source's shadow behind a hole's corner,
+// 1e-12 wide, was left uncovered in one order (corpus/fuzz_solver/regress/full-coverage-source-
+// ray-along-a-line-of-vertices-shadow-left-by-batch-order).
+void reportFanOfALostSliver(const Interval& in, std::span<const Interval> reached,
+                            double edgeLength, EdgeUpdateReport& report) {
+  const Interval& first = reached.front();
+  const Interval& last = reached.back();
+  if (!(in.length() < tinyLengthBetween(&first, in, &last, edgeLength))) return;
+  const double tiny = tinyLength(in, edgeLength);
+  if (in.b0 <= tiny && !sameSource(first, in, edgeLength)) report.fanLostAtVertex |= 1;
+  if (in.b1 >= edgeLength - tiny && !sameSource(last, in, edgeLength)) report.fanLostAtVertex |= 2;
+}
+
 // keepShorter's samples of `old`, the reached interval at `reachedIndex` (cut to the incoming
 // range), against `in`: the scan's, when it sampled this one, else new ones written to `fresh`.
 // (Referred to, not copied: they are 112 bytes, and most updates have them from the scan.)
@@ -1088,7 +1106,10 @@ bool runChildStepsOneAndTwo(IntervalList& work, std::size_t& guess, const Interv
   const std::size_t k1 = partitionFrom(w, k0, [&](const Interval& v) { return v.b0 < in.b1; });
   ReachedScan scan;
   const std::span<const Interval> reached = w.subspan(k0, k1 - k0);
-  if (incomingLosesEverywhere(in, reached, edgeLength, scan)) return false;
+  if (incomingLosesEverywhere(in, reached, edgeLength, scan)) {
+    reportFanOfALostSliver(in, reached, edgeLength, report);
+    return false;
+  }
   if (out.size() < piecesBound(reached.size())) out.resize(piecesBound(reached.size()));
   Pieces pieces{out.data(), 0, out.size(), 0};
   std::vector<double>& breakpoints = report.eq1Breakpoints;
@@ -1397,8 +1418,9 @@ void EdgeIntervals::insert(const Interval& incoming, double edgeLength, EdgeUpda
   // along its own edges lose, by the triangle inequality, to those that reached it). The
   // report names the intervals it lost to; the full verify tier samples the incoming range.
   ReachedScan scan;
-  if (incomingLosesEverywhere(incoming, std::span<const Interval>(list_).subspan(j0, j1 - j0),
-                              edgeLength, scan)) {
+  const std::span<const Interval> reached = std::span<const Interval>(list_).subspan(j0, j1 - j0);
+  if (incomingLosesEverywhere(incoming, reached, edgeLength, scan)) {
+    reportFanOfALostSliver(incoming, reached, edgeLength, report);
     report.first = j0;
     report.last = j1;
     return;

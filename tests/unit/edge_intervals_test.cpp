@@ -455,6 +455,61 @@ TEST(Algorithm2, ASliverANeighbourMayTakeOnlyAfterStep5MergedItIsTaken) {
     EXPECT_FALSE(w.b0 == sliver.b0 && w.b1 == sliver.b1) << "the sliver is still there";
 }
 
+// A sliver of another source ending at a vertex, meeting a window that covers it where the two
+// are equal at the vertex (two sources on one line through it): the sliver's rays beyond the
+// vertex may fan out wider than the window's. When step 3 removes such a sliver into the window,
+// the update reports the fan lost at that vertex (the solver has it relay the fan); a sliver that
+// loses outright to the window, arriving after it, now reports it too. Before, only the first did,
+// and a source's shadow behind a hole's corner was left uncovered in the order where the sliver
+// came second (corpus/fuzz_solver/regress/full-coverage-source-ray-along-a-line-of-vertices-shadow-
+// left-by-batch-order).
+TEST(Algorithm2, ASliverOfAnotherSourceLostAtAVertexRelaysItsFanAsOneStep3Removes) {
+  const Interval window = make(0.0, kL, Vec2(5.0, 3.0), 0.0);
+  const Vec2 far(12.0, 1.0);
+  // σ so that the two are equal at x = L (the sliver longer inside its range); 5e-11 long, below
+  // the sliver's ε (1e-11 × 13).
+  const double sigma = window.distanceAt(kL) - (far - Vec2(kL, 0.0)).norm();
+  {  // lost outright: the new report
+    Edge1 e;
+    e.insert(window);
+    e.insert(make(kL - 5e-11, kL, far, sigma));
+    EXPECT_FALSE(e.report.incomingSurvived);
+    EXPECT_EQ(e.report.degeneracies[DegeneracyKind::D1], 0u);
+    EXPECT_EQ(e.report.fanLostAtVertex, 2);  // at the edge's end: its vertex[1]
+  }
+  {  // shorter by 1e-12 at the vertex, there first: step 3 removes it (the report it always made)
+    Edge1 e;
+    e.insert(make(kL - 5e-11, kL, far, sigma - 1e-12));
+    e.insert(window);
+    EXPECT_EQ(e.report.degeneracies[DegeneracyKind::D1], 1u);
+    EXPECT_EQ(e.report.fanLostAtVertex, 2);
+  }
+  {  // lost outright in a run, as a batch's children reach their edge, at both ends
+    Edge1 e;
+    e.insert(window);
+    const Vec2 before(-2.0, 1.0);
+    const double sigma0 = window.distanceAt(0.0) - before.norm();
+    e.insertRun({make(0.0, 5e-11, before, sigma0), make(kL - 5e-11, kL, far, sigma)});
+    EXPECT_EQ(e.report.fanLostAtVertex, 3);
+  }
+  {  // not when the window is the sliver's own source, nor away from a vertex, nor for more than
+     // a sliver
+    Edge1 same, away, longer;
+    same.insert(window);
+    same.insert(make(kL - 5e-11, kL, window.source, 0.0));
+    EXPECT_EQ(same.report.fanLostAtVertex, 0);
+    away.insert(window);
+    const double mid = 5.0;
+    const double sigmaMid = window.distanceAt(mid) - (far - Vec2(mid, 0.0)).norm();
+    away.insert(make(mid - 5e-11, mid, far, sigmaMid));
+    EXPECT_EQ(away.report.fanLostAtVertex, 0);
+    longer.insert(window);
+    longer.insert(make(kL - 1.0, kL, far, sigma + 1.0));
+    EXPECT_FALSE(longer.report.incomingSurvived);
+    EXPECT_EQ(longer.report.fanLostAtVertex, 0);
+  }
+}
+
 TEST(Algorithm2, BetterEverywhereReplacesOld) {
   Edge1 e;
   e.insert(make(0.0, kL, Vec2(5.0, 3.0), 2.0));

@@ -50,9 +50,10 @@ struct DegeneracyCounters {
   /// Children dropped because their source lies clearly outside the face across their edge
   /// (the rays cannot leave through it; see GeodesicSolver::propagate).
   std::uint64_t childEdgesSeenFromOutside = 0;
-  /// D1 slivers removed at an edge's vertex into a neighbour of another pseudo-source, whose
-  /// vertex then relays the fan they would have made (GeodesicSolver::relayFanThroughVertex):
-  /// the vertices made pseudo-sources this way.
+  /// D1 slivers removed at an edge's vertex into a neighbour of another pseudo-source, or lost
+  /// there outright to one (edge_intervals.cpp, reportFanOfALostSliver), whose vertex then relays
+  /// the fan they would have made (GeodesicSolver::relayFanThroughVertex): the vertices made
+  /// pseudo-sources this way.
   std::uint64_t d1FansRelayed = 0;
   /// Windows whose edge ray runs through the apex of the face they cross (G2–G5), whose apex
   /// then relays the fan beyond it (GeodesicSolver::propagate): the vertices made pseudo-sources
