@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # geodex tests: installs the dependencies, then for each preset configures, builds and runs CTest.
-#   ./test.sh               the release, debug, asan and fuzz presets
+#   ./test.sh               the release, debug, asan, tsan and fuzz presets
 #   ./test.sh debug [...]   the named presets only
 # The fuzz preset builds only the libFuzzer targets and the corpus tools and runs the corpus
 # replay plus a fixed-seed fuzz smoke per target (labels corpus, fuzz-smoke; scripts/fuzz.sh is the
@@ -10,7 +10,7 @@
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")"
 
-if [[ $# -gt 0 ]]; then PRESETS=("$@"); else PRESETS=(release debug asan fuzz); fi
+if [[ $# -gt 0 ]]; then PRESETS=("$@"); else PRESETS=(release debug asan tsan fuzz); fi
 FUZZ_TARGETS=(fuzz_mesh_io fuzz_predicates fuzz_edge_update fuzz_propagation fuzz_two_faces fuzz_solver
   geodex_corpus_open_findings geodex_corpus_degeneracy_coverage geodex_make_seeds)
 

@@ -7,7 +7,10 @@ code) and VTP (Qin et al. 2016), built as command-line drivers by ../shared/anch
 Single vertex source v:0 on each mesh of the table in docs/benchmarks.md: propagation time (each
 tool's own timer around the solve only; median of N runs, each in a fresh process) and the whole
 process's peak memory (the largest over the runs, from wait4), and how far each reference is from
-geodex (max |d - geodex| / the largest distance, over the vertices both reach). Without
+geodex (max |d - geodex| / the largest distance, over the vertices both reach). geodex runs
+with two threads (`--threads 2`, the CLI's default on two cores; its distances are the same to
+the bit with one), and once more with one for the column beside it; the references run on one
+thread each, as they are written. Without
 --anchors, or where a driver is missing or fails, its columns read "–" and nothing fails. Prints
 a Markdown table; exit 2 only for bad usage or a geodex failure.
 """
@@ -67,16 +70,16 @@ def distances(path):
         return [float(x) for x in f if x.strip()]
 
 
-def geodex_run(binary, mesh, out, reps):
+def geodex_run(binary, mesh, out, reps, threads):
     times, rss = [], 0.0
     for _ in range(reps):
-        code, text, mb = run([binary, "distance", mesh, "--source", "v:0", "--stats", "--quiet", "--out", out])
+        code, text, mb = run([binary, "distance", mesh, "--source", "v:0", "--stats", "--quiet", "--out", out,
+                              "--threads", str(threads)])
         m = re.search(r"time:\s+[\d.]+ s load, ([\d.]+) s solve", text)
         if code != 0 or not m:
             sys.exit("geodex failed on %s: %s" % (mesh, text[-400:]))
         times.append(1000 * float(m.group(1)))
         rss = max(rss, mb)
-    faces = re.search(r"faces?:\s+(\d+)", text)
     return statistics.median(times), rss
 
 
@@ -134,9 +137,9 @@ def main():
     if a.only:
         names = [n for n in names if n.split(".")[0] in a.only.split(",") or n in a.only.split(",")]
     work = tempfile.mkdtemp(prefix="geodex-anchors-")
-    print("| mesh | faces | geodex ms | MB | Kirsanov ms | MB | VTP ms | MB | VTP / geodex | Kirsanov / geodex "
-          "| geodex / VTP MB | Kirsanov off by | VTP off by |")
-    print("|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|")
+    print("| mesh | faces | geodex ms | MB | 1 thread ms | Kirsanov ms | MB | VTP ms | MB | VTP / geodex "
+          "| Kirsanov / geodex | geodex / VTP MB | Kirsanov off by | VTP off by |")
+    print("|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|")
     dash = "–"
     for name in names:
         if name == "icosphere-6":
@@ -148,8 +151,11 @@ def main():
             print("# %s: not found, skipped" % mesh, file=sys.stderr)
             continue
         ours = os.path.join(work, "geodex.txt")
-        g_ms, g_mb = geodex_run(a.geodex, mesh, ours, a.reps)
+        g_ms, g_mb = geodex_run(a.geodex, mesh, ours, a.reps, 2)
         d = distances(ours)
+        one_ms, _ = geodex_run(a.geodex, mesh, ours, a.reps, 1)
+        if distances(ours) != d:
+            sys.exit("geodex on one thread gave other distances than on two on %s" % mesh)
         cells = {}
         for ref, path in refs.items():
             if not path:
@@ -165,8 +171,8 @@ def main():
         fmt = lambda x, p="%.0f": dash if x is None else p % x
         kms, kmb, koff = cells["kirsanov"]
         vms, vmb, voff = cells["vtp"]
-        print("| %s | %d | %.0f | %.0f | %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
-            name.rsplit(".", 1)[0], faces_of(mesh), g_ms, g_mb, fmt(kms), fmt(kmb), fmt(vms), fmt(vmb),
+        print("| %s | %d | %.0f | %.0f | %.0f | %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
+            name.rsplit(".", 1)[0], faces_of(mesh), g_ms, g_mb, one_ms, fmt(kms), fmt(kmb), fmt(vms), fmt(vmb),
             fmt(vms / g_ms if vms else None, "%.2f"), fmt(kms / g_ms if kms else None, "%.2f"),
             fmt(g_mb / vmb if vmb and vms else None, "%.2f"), koff, voff), flush=True)
     return 0

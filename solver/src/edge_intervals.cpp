@@ -1074,7 +1074,7 @@ void updateSlice(IntervalList& edgeList, std::size_t j0, std::size_t j1, const I
 }
 
 // ===  A run of incoming intervals ================================================================
-// The children one batch of windows sends to this edge (GeodesicSolver::propagateEdgeSide): steps
+// The children one batch of windows sends to this edge (GeodesicSolver::runBatch): steps
 // 1 and 2 for each in turn, on a copy of the list's slice over all of them, then steps 3–5 once
 // over that copy and one splice. Each child meets the intervals as the ones before it left them,
 // as it would one update after another; only the repairs of steps 3–5 are not made between them,

@@ -11,6 +11,7 @@
 #include "geodex/error.h"
 #include "geodex/predicates.h"
 #include "geodex/tolerance.h"
+#include "helper_thread.h"
 
 namespace geodex {
 namespace {
@@ -39,7 +40,7 @@ Interval windowFromPoint(const Mesh& mesh, Index f, Index e, const ResolvedPoint
 // the buckets coarse for all the others.
 constexpr double kQueueBucketEdges = 0.5;
 // How far beyond a popped edge side's key its other pending windows are propagated with it
-// (propagateEdgeSide), in median edge lengths: a window's children lie up to an edge beyond it
+// (runBatch), in median edge lengths: a window's children lie up to an edge beyond it
 // anyway. Measured on bunny00 / armadillo / fandisk: 0.1–0.4 % more windows than one by one at
 // 0.5, 1 or unbounded, and the solve 8–20 % faster; unbounded was as fast, but would let a far
 // window's descendants ride ahead of the front with every batch they share an edge with.
@@ -58,9 +59,21 @@ GeodesicSolver::GeodesicSolver(const Mesh& mesh) : mesh_(mesh) {
   batchSlack_ = queueBucketWidth_ * (kBatchSlackEdges / kQueueBucketEdges);
 }
 
+GeodesicSolver::~GeodesicSolver() = default;
+
 void GeodesicSolver::reset() {
-  edges_.clear();  // every list back to the pool, which then starts over
+  edges_.clear();  // every list back to its pool, which then starts over
   pool_.recycle();
+  helperPool_.recycle();
+  for (Batch& b : batches_) {  // (as finishBatch leaves them, also after a solve that threw)
+    for (Run& run : b.runs) run.clear();
+    b.caseDegenerate.clear();
+    b.relayApexes.clear();
+    b.propagations.clear();
+    b.counters = {};
+    b.propagated = 0;
+    b.frame = nullptr;
+  }
   edges_.assign(mesh_.numEdges(), EdgeIntervals(&pool_));
   vertexDistance_.assign(mesh_.numVertices(), kInfinity);
   emitsWindows_.resize(mesh_.numVertices());
@@ -91,6 +104,10 @@ void GeodesicSolver::solve(std::span<const SurfacePoint> sources, const SolveOpt
   // Lists are released only where nothing will read them: not for targets (their distances are
   // read from the lists during the solve) nor for an observer that reads them.
   observerReadsLists_ = hooked() && observer_->readsIntervalLists();
+  // The pairs, and so the results, are the same whether a batch's partner runs on the helper
+  // thread or after it; an observer's events come from this thread either way (finishBatch).
+  useHelper_ = options.threads >= 2;
+  if (useHelper_ && helper_ == nullptr) helper_ = std::make_unique<detail::HelperThread>();
   const bool release = options.vertexDistancesOnly && targets.empty() && !observerReadsLists_;
   double radius = kInfinity;
   bool undone = false;
@@ -146,7 +163,7 @@ bool GeodesicSolver::runWavefront(const SolveOptions& inMeshUnits,
       }
       continue;
     }
-    propagateEdgeSide(top, std::min(top.key + batchSlack_, inMeshUnits.stopDistance));
+    runRound(top, inMeshUnits.stopDistance);
     if (releaseBroken_) return false;
 #if defined(GEODEX_FUZZING_BUILD_MODE)
     // The fuzzing switch: a wavefront that runs away on a fuzzer's mesh (≤ 64 faces) is reported
@@ -377,26 +394,28 @@ void GeodesicSolver::seedAcrossPointOnEdge(Index v, Index e, Index f, double x, 
 }
 
 // ===  One propagation case =======================================================================
-// Its children are not added to their edges here: they join the runs propagateEdgeSide adds to
+// Its children are not added to their edges here: they join the runs runBatch adds to
 // each child edge once the batch is done.
-void GeodesicSolver::propagate(Index edge, const Interval& w, Index f, const FaceFrame& fr) {
+void GeodesicSolver::propagate(Batch& b, Index edge, const Interval& w, Index f,
+                               const FaceFrame& fr) {
   const Edge& E = mesh_.edge(edge);
-  ++stats_.intervalsPropagated;
+  ++b.propagated;
 
   const LocalWindow local{E.length, fr.apexPos, w.b0, w.b1, Vec2(w.source.x(), -w.source.y())};
   const LocalPropagation result = propagateLocal(local);
-  ++counters_.cases;
+  ++b.counters.cases;
   const auto kind = degeneracyOf(result.branch);
-  if (kind) ++counters_[*kind];
-  if (result.branch == Fig6Branch::ZeroAreaFace) ++counters_.zeroAreaFaces;
-  if (result.branch == Fig6Branch::G1Outside) ++counters_.sourceOnEdgeLineOutside;
+  if (kind) ++b.counters[*kind];
+  if (result.branch == Fig6Branch::ZeroAreaFace) ++b.counters.zeroAreaFaces;
+  if (result.branch == Fig6Branch::G1Outside) ++b.counters.sourceOnEdgeLineOutside;
 
   const bool oneLine = childEdgesOnOneLine(local);
-  // Each child goes straight into its edge's run (addBatchRuns); an observer is shown them too.
-  const auto caseInBatch = static_cast<std::uint32_t>(batchCaseDegenerate_.size());
-  batchCaseDegenerate_.push_back(kind.has_value());
-  std::array<MadeChild, 2> madeChildren;
-  std::size_t numMade = 0;
+  // Each child goes straight into its edge's run (runBatch); an observer is shown them too.
+  const auto caseInBatch = static_cast<std::uint32_t>(b.caseDegenerate.size());
+  b.caseDegenerate.push_back(kind.has_value());
+  // (What an observer is shown of this case, in finishBatch: on the solve's own thread.)
+  Batch::Propagation* shown = nullptr;
+  if (hooked()) shown = &b.propagations.emplace_back(Batch::Propagation{f, edge, w, local, result});
   for (int c = 0; c < result.numChildren; ++c) {
     const LocalChild& child = result.children[c];
     const bool onE1 = child.edge == 1;
@@ -404,9 +423,9 @@ void GeodesicSolver::propagate(Index edge, const Interval& w, Index f, const Fac
     const Edge& CE = mesh_.edge(ce);
     const Index start = onE1 ? E.vertex[0] : fr.apex;  // where the directed segment e1 or e2 starts
     const ChildInterval made = childInterval(local, child, {CE.length, CE.vertex[0] == start}, oneLine);
-    if (made.outcome == ChildOutcome::SeenFromOutside) ++counters_.childEdgesSeenFromOutside;
+    if (made.outcome == ChildOutcome::SeenFromOutside) ++b.counters.childEdgesSeenFromOutside;
     if (made.outcome != ChildOutcome::Made) continue;
-    Run& run = runs_[onE1 ? 0 : 1];
+    Run& run = b.runs[onE1 ? 0 : 1];
     Interval& n = run.incoming.emplace_back(made.interval);
     n.sigma = w.sigma;
     n.side = static_cast<std::uint8_t>(mesh_.sideOf(ce, f));
@@ -415,12 +434,9 @@ void GeodesicSolver::propagate(Index edge, const Interval& w, Index f, const Fac
     run.cases.push_back(caseInBatch);
     if (hooked()) {
       run.branches.push_back(result.branch);
-      madeChildren[numMade++] = {ce, n};
+      shown->children[shown->numChildren++] = {ce, n};
     }
   }
-  if (hooked())
-    observer_->onPropagation(
-        {f, edge, w, local, result, std::span<const MadeChild>(madeChildren.data(), numMade)});
   // In G2–G5 a window's edge ray runs through the apex, and the far edge's side next to the apex
   // is left to the neighbouring window, which can fan away from this ray there: two sources'
   // boundary, exact on a line through the apex, moved 5e-12 off it when step 3 gave a D1 sliver
@@ -428,70 +444,202 @@ void GeodesicSolver::propagate(Index edge, const Interval& w, Index f, const Fac
   // (SolverRegression.TwoSourcesMeetingOnARayThroughAFaceApexLeaveNoWedgeBehindIt, G2); an edge
   // source on a line through two vertices lost the fan beyond them the same way
   // (SolverRegression.AnEdgeSourceOnALineThroughTwoVerticesReachesBeyondThem, G4/G5). The apex
-  // relays the fan: a path along the ray and on from the apex is a real path.
+  // relays the fan: a path along the ray and on from the apex is a real path (finishBatch).
   if (result.branch == Fig6Branch::G2 || result.branch == Fig6Branch::G3 ||
       result.branch == Fig6Branch::G4 || result.branch == Fig6Branch::G5) [[unlikely]]
-    relayFanThroughVertex(fr.apex, counters_.apexFansRelayed);
+    b.relayApexes.push_back(fr.apex);
 }
 
-// Adds each run of the batch's children to its edge (addRun). A case is degenerate when its Fig. 6
-// leaf is G1–G5 or the update repaired a D1–D4 at one of its children (forEachRepairedIncoming):
-// where its own update would have, had each child been one, not wherever in its batch's run.
-void GeodesicSolver::addBatchRuns(const FaceFrame& fr) {
-  for (int k = 0; k < 2; ++k) {
-    Run& run = runs_[k];
-    if (run.incoming.empty()) continue;
-    addRun(k == 0 ? fr.edgeToV0 : fr.edgeToV2, run);
-    if (report_.degeneracies.discontinuityTotal() > 0) {
-      forEachRepairedIncoming(report_, run.incoming,
-                              [&](std::size_t i) { batchCaseDegenerate_[run.cases[i]] = 1; });
-    }
-    run.clear();
-  }
-  for (const std::uint8_t degenerate : batchCaseDegenerate_)
-    counters_.degenerateCases += degenerate;
-  batchCaseDegenerate_.clear();
-}
-
+// ===  Batches ====================================================================================
 // The windows on one side of an edge are propagated together, as VTP (Qin et al. 2016) propagates
 // an edge's window list across its face: all of them whose smallest distance is at most `upTo`
 // (kBatchSlackEdges beyond the entry's key), in the list's order. One queue entry per edge side
 // then stands for all its pending windows, and none has to be looked for in its list when popped.
 // Their children go to the face's other two edges, never to this one, so the list stays as it is
-// while they are made. The entry is stale when a smaller key was queued for the side since, or
-// another entry's batch has run.
-void GeodesicSolver::propagateEdgeSide(const QueueEntry& entry, double upTo) {
-  const Index edge = entry.edge;
-  const auto side = static_cast<std::uint8_t>(entry.which);
+// while they are made; each child edge gets its children as one run: steps 1 and 2 for each in
+// turn, steps 3–5 once (EdgeIntervals::insertRun). 83 % of bunny00's updates were a later child
+// of the same batch on the same edge, and one update per child cost 8–14 % more of the solve on
+// the real meshes (docs/benchmarks.md). The entry is stale when a smaller key was queued for the
+// side since, or another entry's batch has run.
+void GeodesicSolver::prepareBatch(Batch& b, const QueueEntry& entry, double stopDistance) const {
+  b.entry = entry;
+  b.upTo = std::min(entry.key + batchSlack_, stopDistance);
+  b.live = entry.key == pendingKey_[2 * std::size_t{entry.edge} + entry.which];
+  b.face = mesh_.edge(entry.edge).face[1 - entry.which];
+  b.frame = b.live && b.face != kNoIndex ? &mesh_.frame(b.face, entry.edge) : nullptr;
+}
+
+void GeodesicSolver::runBatch(Batch& b, IntervalPool* pool) {
+  if (!b.live) return;
+  const Index edge = b.entry.edge;
+  const auto side = static_cast<std::uint8_t>(b.entry.which);
   double& pendingKey = pendingKey_[2 * std::size_t{edge} + side];
-  if (entry.key != pendingKey) return;
-  const Index f = mesh_.edge(edge).face[1 - side];
+  const Index f = b.face;
+  b.rest = kInfinity;
   if (f == kNoIndex) {  // a boundary: nothing to cross (Algorithm 2 may have re-opened a window)
     for (Interval& w : edges_[edge].intervals())
       if (w.side == side) w.markPropagated();
     pendingKey = kInfinity;
     return;
   }
-  const FaceFrame& fr = mesh_.frame(f, edge);
+  const FaceFrame& fr = *b.frame;
   // The children go to the face's other two edges: their lists are wanted soon.
   __builtin_prefetch(&edges_[fr.edgeToV0]);
   __builtin_prefetch(&edges_[fr.edgeToV2]);
-  double rest = kInfinity;  // the smallest distance of the windows left pending
   for (std::size_t i = 0; i < edges_[edge].intervals().size(); ++i) {
     Interval& w = edges_[edge].intervals()[i];
     if (!w.pending() || w.side != side) continue;
     const double key = w.minDistance();
-    if (key > upTo) {
-      rest = std::min(rest, key);
+    if (key > b.upTo) {
+      b.rest = std::min(b.rest, key);
       continue;
     }
     w.markPropagated();
     const Interval window = w;
-    propagate(edge, window, f, fr);
+    propagate(b, edge, window, f, fr);
   }
-  addBatchRuns(fr);
-  pendingKey = rest;
-  if (rest < kInfinity) queue_.push(QueueEntry::edgeSide(edge, side, rest));
+  pendingKey = b.rest;
+  for (int k = 0; k < 2; ++k) {
+    const Run& run = b.runs[k];
+    if (run.incoming.empty()) continue;
+    const Index ce = k == 0 ? fr.edgeToV0 : fr.edgeToV2;
+    // A released list is not updated: finishBatch has the solve done again keeping every list.
+    // (releaseState_ changes only between batches.)
+    b.updated[k] = !(releasing_ && releaseState_[ce] == kReleased);
+    if (!b.updated[k]) [[unlikely]]
+      continue;
+    EdgeIntervals& list = edges_[ce];
+    // The list before the update is copied only for an observer that reads it: the copy cost the
+    // CLI's progress line 8 % of bunny00's solve at a terminal.
+    if (observerReadsLists_) b.before[k].assign(list.intervals().begin(), list.intervals().end());
+    list.usePool(pool);
+    list.insertRun(run.incoming, mesh_.edge(ce).length, b.reports[k], b.scratch, b.work);
+  }
+}
+
+// What the batch's updates mean, in the order it made them: its counts, the apexes that relay a
+// fan (G2–G5, propagate), each child edge's update (afterUpdate; the cases a repair made
+// degenerate, forEachRepairedIncoming), and the side queued again for its windows left pending.
+// A case is degenerate when its Fig. 6 leaf is G1–G5 or the update repaired a D1–D4 at one of its
+// children: where its own update would have, had each child been one, not wherever in its batch's
+// run.
+void GeodesicSolver::finishBatch(Batch& b) {
+  if (!b.live) return;
+  stats_.intervalsPropagated += b.propagated;
+  counters_ += b.counters;
+  if (hooked()) {
+    for (const Batch::Propagation& p : b.propagations) {
+      observer_->onPropagation({p.face, p.edge, p.window, p.local, p.result,
+                                std::span<const MadeChild>(p.children.data(), p.numChildren)});
+    }
+    b.propagations.clear();
+  }
+  for (const Index apex : b.relayApexes) relayFanThroughVertex(apex, counters_.apexFansRelayed);
+  for (int k = 0; k < 2 && b.frame != nullptr; ++k) {
+    Run& run = b.runs[k];
+    if (run.incoming.empty()) continue;
+    const Index ce = k == 0 ? b.frame->edgeToV0 : b.frame->edgeToV2;
+    if (!b.updated[k]) [[unlikely]] {
+      releaseBroken_ = true;  // the solve starts again keeping every list
+      run.clear();
+      continue;
+    }
+    if (releasing_)
+      for (const Interval& w : run.incoming) fileForRelease(ce, w);
+    stats_.intervalsCreated += run.incoming.size();
+    const EdgeUpdateReport& report = b.reports[k];
+    afterUpdate(ce, report);
+    if (hooked()) {
+      const std::span<const Interval> before = observerReadsLists_
+                                                   ? std::span<const Interval>(b.before[k])
+                                                   : std::span<const Interval>();
+      observer_->onEdgeUpdate({ce, mesh_.edge(ce).length, before, run.incoming,
+                               edges_[ce].intervals(), report, run.branches});
+    }
+    if (report.degeneracies.discontinuityTotal() > 0) {
+      forEachRepairedIncoming(report, run.incoming,
+                              [&](std::size_t i) { b.caseDegenerate[run.cases[i]] = 1; });
+    }
+    run.clear();
+  }
+  for (const std::uint8_t degenerate : b.caseDegenerate) counters_.degenerateCases += degenerate;
+  if (b.rest < kInfinity) queue_.push(QueueEntry::edgeSide(b.entry.edge, b.entry.which, b.rest));
+  b.caseDegenerate.clear();
+  b.relayApexes.clear();
+  b.counters = {};
+  b.propagated = 0;
+  b.frame = nullptr;
+}
+
+// How far behind the queue's front runRound looks for batches to run beside the front's.
+constexpr std::uint32_t kRoundLookahead = 32;
+
+// A round: the batch of `top`, just taken from the queue, and up to kRoundBatches − 1 more of the
+// entries behind it (in its bucket's page) that are live edge sides within the stop and share no
+// edge, crossed or child, with any batch of the round before them. Batches with no edge in common
+// read and write nothing the others do (runBatch), so they run in any order or at once: each
+// thread of the solve takes the round's batches one at a time until none is left
+// (claimBatches), and then this one finishes them in the round's order. The entries of the later
+// batches stay in the queue and are stale once they have run (their sides' keys are then beyond
+// them). That changes the wavefront's order, not its result: Algorithm 2 keeps the pointwise
+// minimum of every window an edge receives, in whatever order, and a vertex reached again at a
+// smaller distance emits its windows again. The rounds are the same whatever the threads.
+void GeodesicSolver::runRound(const QueueEntry& top, double stopDistance) {
+  prepareBatch(batches_[0], top, stopDistance);
+  roundSize_ = 1;
+  if (batches_[0].frame != nullptr) {
+    const FaceFrame& fr = *batches_[0].frame;
+    std::array<Index, 3 * kRoundBatches> taken{top.edge, fr.edgeToV0, fr.edgeToV2};
+    std::size_t numTaken = 3;
+    for (std::uint32_t k = 0; k < kRoundLookahead && roundSize_ < kRoundBatches; ++k) {
+      const QueueEntry* e = queue_.peek(k);
+      if (e == nullptr) break;
+      if (e->edge == kNoIndex || e->key > stopDistance ||
+          e->key != pendingKey_[2 * std::size_t{e->edge} + e->which])
+        continue;
+      const Index f = mesh_.edge(e->edge).face[1 - e->which];
+      if (f == kNoIndex) continue;
+      const FaceFrame& ef = mesh_.frame(f, e->edge);
+      const std::array<Index, 3> edges{e->edge, ef.edgeToV0, ef.edgeToV2};
+      const auto end = taken.begin() + static_cast<std::ptrdiff_t>(numTaken);
+      if (std::find_first_of(taken.begin(), end, edges.begin(), edges.end()) != end) continue;
+      prepareBatch(batches_[roundSize_++], *e, stopDistance);
+      for (const Index x : edges) taken[numTaken++] = x;
+    }
+  }
+  stats_.batchesBesideTheFront += roundSize_ - 1;
+  roundNext_.store(0, std::memory_order_relaxed);
+  if (useHelper_ && roundSize_ > 1) {
+    helper_->post(&claimBatchesOnTheHelper, this);
+    try {
+      claimBatches(&pool_);
+    } catch (...) {
+      try {
+        helper_->finish();  // its batches work on the solver too: done before this unwinds
+      } catch (...) {       // (this thread's error is the one reported)
+      }
+      throw;
+    }
+    helper_->finish();
+  } else {
+    claimBatches(&pool_);
+  }
+  for (std::size_t i = 0; i < roundSize_; ++i) finishBatch(batches_[i]);
+}
+
+// Runs the round's batches not yet taken, one at a time, the lists they update allocating from
+// `pool` (this thread's).
+void GeodesicSolver::claimBatches(IntervalPool* pool) {
+  for (;;) {
+    const std::size_t i = roundNext_.fetch_add(1, std::memory_order_relaxed);
+    if (i >= roundSize_) return;
+    runBatch(batches_[i], pool);
+  }
+}
+
+void GeodesicSolver::claimBatchesOnTheHelper(void* solver) {
+  auto* s = static_cast<GeodesicSolver*>(solver);
+  s->claimBatches(&s->helperPool_);
 }
 
 // A window is pending on its edge side: the side is queued again when the window's smallest
@@ -629,7 +777,7 @@ void GeodesicSolver::addInterval(Index edge, const Interval& w) {
   // CLI's progress line 8 % of bunny00's solve at a terminal.
   if (observerReadsLists_) before_.assign(list.intervals().begin(), list.intervals().end());
   list.insert(w, length, report_, scratch_);
-  afterUpdate(edge);
+  afterUpdate(edge, report_);
   if (hooked()) {
     const std::span<const Interval> before =
         observerReadsLists_ ? std::span<const Interval>(before_) : std::span<const Interval>();
@@ -637,45 +785,19 @@ void GeodesicSolver::addInterval(Index edge, const Interval& w) {
   }
 }
 
-// Steps 1 and 2 for each child in turn, steps 3–5 once (EdgeIntervals::insertRun): 83 % of
-// bunny00's updates were a later child of the same batch on the same edge, and one update per
-// child cost 8–14 % more of the solve on the real meshes (docs/benchmarks.md).
-void GeodesicSolver::addRun(Index edge, const Run& run) {
-  if (releasing_) {
-    if (releaseState_[edge] == kReleased) [[unlikely]] {
-      releaseBroken_ = true;  // the solve starts again keeping every list
-      report_.clear();        // (no update: addBatchRuns reads no repairs of an earlier one)
-      return;
-    }
-    for (const Interval& w : run.incoming) fileForRelease(edge, w);
-  }
-  stats_.intervalsCreated += run.incoming.size();
-  const double length = mesh_.edge(edge).length;
-  EdgeIntervals& list = edges_[edge];
-  if (observerReadsLists_) before_.assign(list.intervals().begin(), list.intervals().end());
-  list.insertRun(run.incoming, length, report_, scratch_, work_);
-  afterUpdate(edge);
-  if (hooked()) {
-    const std::span<const Interval> before =
-        observerReadsLists_ ? std::span<const Interval>(before_) : std::span<const Interval>();
-    observer_->onEdgeUpdate(
-        {edge, length, before, run.incoming, list.intervals(), report_, run.branches});
-  }
-}
-
-// What an update of `edge` (report_) means for the queue and the vertices.
-void GeodesicSolver::afterUpdate(Index edge) {
+// What an update of `edge` (`report`) means for the queue and the vertices.
+void GeodesicSolver::afterUpdate(Index edge, const EdgeUpdateReport& report) {
   const double length = mesh_.edge(edge).length;
   EdgeIntervals& list = edges_[edge];
   for (DegeneracyKind k :
        {DegeneracyKind::D1, DegeneracyKind::D2, DegeneracyKind::D3, DegeneracyKind::D4})
-    counters_[k] += report_.degeneracies[k];  // (Algorithm 2 finds only these)
-  counters_.tieStripsKept += report_.degeneracies.tieStripsKept;
+    counters_[k] += report.degeneracies[k];  // (Algorithm 2 finds only these)
+  counters_.tieStripsKept += report.degeneracies.tieStripsKept;
 
   // Every pending interval that is new or whose smallest distance moved may lower its edge
   // side's key; the others keep theirs, which the side's key is no larger than.
   const std::span<Interval> all = list.intervals();
-  for (std::size_t i = report_.first; i < report_.last; ++i) {
+  for (std::size_t i = report.first; i < report.last; ++i) {
     Interval& iv = all[i];
     if (!(iv.flags & Interval::kChanged)) continue;
     iv.flags &= static_cast<std::uint8_t>(~Interval::kChanged);
@@ -686,14 +808,14 @@ void GeodesicSolver::afterUpdate(Index edge) {
   const auto intervals = list.intervals();
   if (!intervals.empty()) {
     const Edge& E = mesh_.edge(edge);
-    if (report_.fanLostAtVertex != 0) [[unlikely]] {
+    if (report.fanLostAtVertex != 0) [[unlikely]] {
       for (int k = 0; k < 2; ++k)
-        if (report_.fanLostAtVertex & (1 << k))
+        if (report.fanLostAtVertex & (1 << k))
           relayFanThroughVertex(E.vertex[k], counters_.d1FansRelayed);
     }
-    if (report_.first == 0 && intervals.front().b0 == 0.0)
+    if (report.first == 0 && intervals.front().b0 == 0.0)
       updateVertex(E.vertex[0], intervals.front().distanceAt(0.0));
-    if (report_.last == intervals.size() && intervals.back().b1 == length)
+    if (report.last == intervals.size() && intervals.back().b1 == length)
       updateVertex(E.vertex[1], intervals.back().distanceAt(length));
   }
 }

@@ -21,6 +21,7 @@
 #include <utility>
 #include <vector>
 
+#include "geodex/check.h"
 #include "geodex/degeneracy.h"
 #include "geodex/interval.h"
 #include "geodex/interval_pool.h"
@@ -224,6 +225,12 @@ class EdgeIntervals {
   void clear() { list_.clear(); }
   /// Empties the list and hands its memory back (to the pool it was allocated from).
   void clearAndRelease() { list_.clearAndRelease(); }
+  /// The list's memory comes from, and goes back to, `pool` from now on (IntervalList::usePool):
+  /// only between pools.
+  void usePool(IntervalPool* pool) {
+    GEODEX_CHECK(list_.pool() != nullptr && pool != nullptr, "a list moved to or from no pool");
+    list_.usePool(pool);
+  }
   /// For tests and the fuzzers: install a list as it is (no checks; verify/ judges it).
   void assign(const std::vector<Interval>& list) { list_.assign(list); }
 

@@ -10,7 +10,10 @@
 //   double d = solver.distance(SurfacePoint::onEdge(3, 4, 0.25));
 //   GeodesicPath p = solver.path(SurfacePoint::atVertex(42));
 
+#include <array>
+#include <atomic>
 #include <limits>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -22,6 +25,9 @@
 #include "geodex/surface_point.h"
 
 namespace geodex {
+namespace detail {
+class HelperThread;
+}
 
 inline constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
@@ -41,6 +47,13 @@ struct SolveOptions {
   /// point, path() and edgeIntervals() refuse. Ignored with targets, or with an observer that
   /// reads the lists (SolverObserver::readsIntervalLists).
   bool vertexDistancesOnly = false;
+  /// Threads for the wavefront: 1, or 2 to share the batches of each round between the thread
+  /// that called solve() and a helper thread (a round: the batch of windows taken from the queue
+  /// and up to three from just behind it that touch none of its edges nor each other's). The
+  /// rounds are the same whatever the threads, so the results are the same to the bit. More than
+  /// 2 counts as 2. An observer's events all come from the thread that called solve(), in the
+  /// same order.
+  unsigned threads = 1;
 };
 
 struct SolveStats {
@@ -64,6 +77,9 @@ struct SolveStats {
   /// again keeping every list (the counts above are then the second solve's).
   std::uint64_t edgesReleased = 0;
   bool releaseUndone = false;
+  /// Batches run beside the one taken from the queue's front, in its round (SolveOptions::threads):
+  /// the work a second thread can share. The same whatever the threads.
+  std::uint64_t batchesBesideTheFront = 0;
   double radius = kInfinity;  ///< distances up to this are final (inf: ran to the end), file units
 };
 
@@ -81,6 +97,9 @@ struct GeodesicPath {
 class GeodesicSolver {
  public:
   explicit GeodesicSolver(const Mesh& mesh);
+  ~GeodesicSolver();
+  GeodesicSolver(const GeodesicSolver&) = delete;
+  GeodesicSolver& operator=(const GeodesicSolver&) = delete;
 
   /// Attach an observer (verify/ uses this); nullptr detaches. Not owned.
   void setObserver(SolverObserver* observer) { observer_ = observer; }
@@ -149,11 +168,51 @@ class GeodesicSolver {
       cases.clear();
     }
   };
+  /// One batch: the pending windows of an edge side up to a distance, propagated across the
+  /// face beyond it, their children merged into the face's other two edges (Algorithm 2, one run
+  /// per edge). runBatch writes only what the batch holds, the edge side's own windows and key,
+  /// and the lists of the two child edges, so that two batches with no edge in common can run at
+  /// once; finishBatch then does what they mean for the queue, the vertices and the counts.
+  // (On cache lines of its own: two threads write their batches' counts at once.)
+  struct alignas(64) Batch {
+    QueueEntry entry{};
+    double upTo = 0.0;
+    bool live = false;  // the entry was not stale
+    Index face = kNoIndex;
+    const FaceFrame* frame = nullptr;
+    double rest = kInfinity;  // the smallest distance of the side's windows left pending
+    Run runs[2];
+    EdgeUpdateReport reports[2];
+    bool updated[2] = {false, false};  // false: the run reached a released list (not updated)
+    std::vector<Interval> before[2];   // (for an observer that reads the lists)
+    std::vector<std::uint8_t> caseDegenerate;
+    std::vector<Interval> scratch;
+    IntervalList work;  // (EdgeIntervals::insertRun's copy of a slice)
+    DegeneracyCounters counters;
+    std::uint64_t propagated = 0;
+    std::vector<Index> relayApexes;  // G2–G5 apexes to relay the fan through
+    /// For an observer: each case as propagate saw it (PropagationEvent), shown by finishBatch.
+    struct Propagation {
+      Index face;
+      Index edge;
+      Interval window;
+      LocalWindow local;
+      LocalPropagation result;
+      std::array<MadeChild, 2> children{};
+      std::size_t numChildren = 0;
+    };
+    std::vector<Propagation> propagations;
+  };
   void addInterval(Index edge, const Interval& w);
-  void addRun(Index edge, const Run& run);
-  void addBatchRuns(const FaceFrame& fr);
-  void afterUpdate(Index edge);
-  void propagateEdgeSide(const QueueEntry& entry, double upTo);
+  /// At most this many batches run in one round (runRound).
+  static constexpr std::size_t kRoundBatches = 4;
+  void runRound(const QueueEntry& top, double stopDistance);
+  void claimBatches(IntervalPool* pool);
+  static void claimBatchesOnTheHelper(void* solver);
+  void prepareBatch(Batch& b, const QueueEntry& entry, double stopDistance) const;
+  void runBatch(Batch& b, IntervalPool* pool);
+  void finishBatch(Batch& b);
+  void afterUpdate(Index edge, const EdgeUpdateReport& report);
   void queuePending(Index edge, const Interval& w);
   void prefetchAhead() const;
   void updateVertex(Index v, double d);
@@ -179,8 +238,9 @@ class GeodesicSolver {
     const std::uint64_t f = mesh_.numFaces() + 1;
     return 20 * f * f;
   }
-  /// One window of `edge` across face f (the one across from its source), fr: f on `edge`.
-  void propagate(Index edge, const Interval& w, Index f, const FaceFrame& fr);
+  /// One window of `edge` across face f (the one across from its source), fr: f on `edge`; its
+  /// children go into b's runs.
+  void propagate(Batch& b, Index edge, const Interval& w, Index f, const FaceFrame& fr);
   void finish(const SolveOptions& options, double radius);
   /// Whether to build and send observer events. GEODEX_NO_OBSERVER_HOOKS compiles the hooks out
   /// (only for bench/hooks_overhead, which measures what the null check costs a release solve).
@@ -199,6 +259,7 @@ class GeodesicSolver {
   const Mesh& mesh_;
   SolverObserver* observer_ = nullptr;
   IntervalPool pool_;  // before edges_: their lists live in it
+  IntervalPool helperPool_;  // (what the helper thread's batches allocate from)
   std::vector<EdgeIntervals> edges_;
   std::vector<double> vertexDistance_;             // mesh units
   // Whether a vertex emits windows when reached: the mesh's pseudo-source vertices, and those
@@ -228,11 +289,13 @@ class GeodesicSolver {
   /// not copy the list into before_ (EdgeUpdateEvent::before is then empty).
   bool observerReadsLists_ = false;
   std::vector<Interval> scratch_, before_;
-  IntervalList work_;  // (EdgeIntervals::insertRun's copy of a slice)
-  /// The children of the batch propagateEdgeSide is running, on the face's edges e1 and e2, and
-  /// whether each of its cases is degenerate so far.
-  Run runs_[2];
-  std::vector<std::uint8_t> batchCaseDegenerate_;
+  /// The round's batches: the one taken from the queue's front first (runRound).
+  Batch batches_[kRoundBatches];
+  std::size_t roundSize_ = 0;
+  // The next batch of the round a thread may take (claimBatches); apart from the batches.
+  alignas(64) std::atomic<std::size_t> roundNext_{0};
+  std::unique_ptr<detail::HelperThread> helper_;  // made by the first solve with two threads
+  bool useHelper_ = false;                        // this solve runs batches on it
   DegeneracyCounters counters_;
   SolveStats stats_;
 };

@@ -97,6 +97,12 @@ class IntervalList {
   void clear() { size_ = 0; }
   /// Empties the list and hands its block back to the pool.
   void clearAndRelease() { release(); }
+  /// Its block goes back to `pool`, and its next ones come from there: a solve's two threads each
+  /// allocate from their own pool for the lists they update (GeodesicSolver's batches). Both the
+  /// old pool and `pool` must be pools: a block of one is a block of any (the size classes are
+  /// the same, and every chunk lives as long as the solver's pools).
+  void usePool(IntervalPool* pool) { pool_ = pool; }
+  IntervalPool* pool() const { return pool_; }
   /// The list becomes a copy of `list` (which must not be part of it).
   void assign(std::span<const Interval> list);
   /// Replaces the intervals [s0, s1) by `with` (which must not be part of the list), moving the
