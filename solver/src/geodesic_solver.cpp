@@ -65,9 +65,12 @@ void GeodesicSolver::reset() {
   edges_.clear();  // every list back to its pool, which then starts over
   pool_.recycle();
   helperPool_.recycle();
+  for (Worker* w : {&solving_, &helping_}) {  // (as runBatch leaves them, also after a throw)
+    for (Run& run : w->runs) run.clear();
+    w->caseDegenerate.clear();
+  }
   for (Batch& b : batches_) {  // (as finishBatch leaves them, also after a solve that threw)
-    for (Run& run : b.runs) run.clear();
-    b.caseDegenerate.clear();
+    b.updates[0].incoming = b.updates[1].incoming = 0;
     b.relayApexes.clear();
     b.propagations.clear();
     b.counters = {};
@@ -396,7 +399,7 @@ void GeodesicSolver::seedAcrossPointOnEdge(Index v, Index e, Index f, double x, 
 // ===  One propagation case =======================================================================
 // Its children are not added to their edges here: they join the runs runBatch adds to
 // each child edge once the batch is done.
-void GeodesicSolver::propagate(Batch& b, Index edge, const Interval& w, Index f,
+void GeodesicSolver::propagate(Batch& b, Worker& worker, Index edge, const Interval& w, Index f,
                                const FaceFrame& fr) {
   const Edge& E = mesh_.edge(edge);
   ++b.propagated;
@@ -411,8 +414,8 @@ void GeodesicSolver::propagate(Batch& b, Index edge, const Interval& w, Index f,
 
   const bool oneLine = childEdgesOnOneLine(local);
   // Each child goes straight into its edge's run (runBatch); an observer is shown them too.
-  const auto caseInBatch = static_cast<std::uint32_t>(b.caseDegenerate.size());
-  b.caseDegenerate.push_back(kind.has_value());
+  const auto caseInBatch = static_cast<std::uint32_t>(worker.caseDegenerate.size());
+  worker.caseDegenerate.push_back(kind.has_value());
   // (What an observer is shown of this case, in finishBatch: on the solve's own thread.)
   Batch::Propagation* shown = nullptr;
   if (hooked()) shown = &b.propagations.emplace_back(Batch::Propagation{f, edge, w, local, result});
@@ -425,7 +428,7 @@ void GeodesicSolver::propagate(Batch& b, Index edge, const Interval& w, Index f,
     const ChildInterval made = childInterval(local, child, {CE.length, CE.vertex[0] == start}, oneLine);
     if (made.outcome == ChildOutcome::SeenFromOutside) ++b.counters.childEdgesSeenFromOutside;
     if (made.outcome != ChildOutcome::Made) continue;
-    Run& run = b.runs[onE1 ? 0 : 1];
+    Run& run = worker.runs[onE1 ? 0 : 1];
     Interval& n = run.incoming.emplace_back(made.interval);
     n.sigma = w.sigma;
     n.side = static_cast<std::uint8_t>(mesh_.sideOf(ce, f));
@@ -469,7 +472,7 @@ void GeodesicSolver::prepareBatch(Batch& b, const QueueEntry& entry, double stop
   b.frame = b.live && b.face != kNoIndex ? &mesh_.frame(b.face, entry.edge) : nullptr;
 }
 
-void GeodesicSolver::runBatch(Batch& b, IntervalPool* pool) {
+void GeodesicSolver::runBatch(Batch& b, Worker& worker) {
   if (!b.live) return;
   const Index edge = b.entry.edge;
   const auto side = static_cast<std::uint8_t>(b.entry.which);
@@ -496,33 +499,58 @@ void GeodesicSolver::runBatch(Batch& b, IntervalPool* pool) {
     }
     w.markPropagated();
     const Interval window = w;
-    propagate(b, edge, window, f, fr);
+    propagate(b, worker, edge, window, f, fr);
   }
   pendingKey = b.rest;
   for (int k = 0; k < 2; ++k) {
-    const Run& run = b.runs[k];
-    if (run.incoming.empty()) continue;
+    Run& run = worker.runs[k];
+    ChildEdgeUpdate& u = b.updates[k];
+    u.incoming = run.incoming.size();
+    if (u.incoming == 0) continue;
     const Index ce = k == 0 ? fr.edgeToV0 : fr.edgeToV2;
     // A released list is not updated: finishBatch has the solve done again keeping every list.
     // (releaseState_ changes only between batches.)
-    b.updated[k] = !(releasing_ && releaseState_[ce] == kReleased);
-    if (!b.updated[k]) [[unlikely]]
+    u.updated = !(releasing_ && releaseState_[ce] == kReleased);
+    if (!u.updated) [[unlikely]] {
+      run.clear();
       continue;
+    }
     EdgeIntervals& list = edges_[ce];
     // The list before the update is copied only for an observer that reads it: the copy cost the
     // CLI's progress line 8 % of bunny00's solve at a terminal.
-    if (observerReadsLists_) b.before[k].assign(list.intervals().begin(), list.intervals().end());
-    list.usePool(pool);
-    list.insertRun(run.incoming, mesh_.edge(ce).length, b.reports[k], b.scratch, b.work);
+    if (observerReadsLists_)
+      b.shown[k].before.assign(list.intervals().begin(), list.intervals().end());
+    list.usePool(worker.pool);
+    EdgeUpdateReport& report = worker.report;
+    list.insertRun(run.incoming, mesh_.edge(ce).length, report, worker.scratch, worker.work);
+    u.first = report.first;
+    u.last = report.last;
+    u.fanLostAtVertex = report.fanLostAtVertex;
+    u.reach = 0.0;
+    if (releasing_)
+      for (const Interval& w : run.incoming) u.reach = std::max(u.reach, releaseReach(w));
+    countRepairs(b.counters, report);
+    if (report.degeneracies.discontinuityTotal() > 0) {
+      forEachRepairedIncoming(report, run.incoming,
+                              [&](std::size_t i) { worker.caseDegenerate[run.cases[i]] = 1; });
+    }
+    if (hooked()) {
+      b.shown[k].incoming.assign(run.incoming.begin(), run.incoming.end());
+      b.shown[k].branches.assign(run.branches.begin(), run.branches.end());
+      b.shown[k].report = report;
+    }
+    run.clear();
   }
+  for (const std::uint8_t degenerate : worker.caseDegenerate)
+    b.counters.degenerateCases += degenerate;
+  worker.caseDegenerate.clear();
 }
 
 // What the batch's updates mean, in the order it made them: its counts, the apexes that relay a
-// fan (G2–G5, propagate), each child edge's update (afterUpdate; the cases a repair made
-// degenerate, forEachRepairedIncoming), and the side queued again for its windows left pending.
-// A case is degenerate when its Fig. 6 leaf is G1–G5 or the update repaired a D1–D4 at one of its
-// children: where its own update would have, had each child been one, not wherever in its batch's
-// run.
+// fan (G2–G5, propagate), each child edge's update (afterUpdate) and the side queued again for
+// its windows left pending. (A case is degenerate when its Fig. 6 leaf is G1–G5 or the update
+// repaired a D1–D4 at one of its children, forEachRepairedIncoming in runBatch: where its own
+// update would have, had each child been one, not wherever in its batch's run.)
 void GeodesicSolver::finishBatch(Batch& b) {
   if (!b.live) return;
   stats_.intervalsPropagated += b.propagated;
@@ -536,35 +564,27 @@ void GeodesicSolver::finishBatch(Batch& b) {
   }
   for (const Index apex : b.relayApexes) relayFanThroughVertex(apex, counters_.apexFansRelayed);
   for (int k = 0; k < 2 && b.frame != nullptr; ++k) {
-    Run& run = b.runs[k];
-    if (run.incoming.empty()) continue;
+    ChildEdgeUpdate& u = b.updates[k];
+    if (u.incoming == 0) continue;
     const Index ce = k == 0 ? b.frame->edgeToV0 : b.frame->edgeToV2;
-    if (!b.updated[k]) [[unlikely]] {
+    if (!u.updated) [[unlikely]] {
       releaseBroken_ = true;  // the solve starts again keeping every list
-      run.clear();
       continue;
     }
-    if (releasing_)
-      for (const Interval& w : run.incoming) fileForRelease(ce, w);
-    stats_.intervalsCreated += run.incoming.size();
-    const EdgeUpdateReport& report = b.reports[k];
-    afterUpdate(ce, report);
+    if (releasing_) fileForRelease(ce, u.reach);
+    stats_.intervalsCreated += u.incoming;
+    afterUpdate(ce, u.first, u.last, u.fanLostAtVertex);
     if (hooked()) {
+      const Batch::Shown& shown = b.shown[k];
       const std::span<const Interval> before = observerReadsLists_
-                                                   ? std::span<const Interval>(b.before[k])
+                                                   ? std::span<const Interval>(shown.before)
                                                    : std::span<const Interval>();
-      observer_->onEdgeUpdate({ce, mesh_.edge(ce).length, before, run.incoming,
-                               edges_[ce].intervals(), report, run.branches});
+      observer_->onEdgeUpdate({ce, mesh_.edge(ce).length, before, shown.incoming,
+                               edges_[ce].intervals(), shown.report, shown.branches});
     }
-    if (report.degeneracies.discontinuityTotal() > 0) {
-      forEachRepairedIncoming(report, run.incoming,
-                              [&](std::size_t i) { b.caseDegenerate[run.cases[i]] = 1; });
-    }
-    run.clear();
   }
-  for (const std::uint8_t degenerate : b.caseDegenerate) counters_.degenerateCases += degenerate;
   if (b.rest < kInfinity) queue_.push(QueueEntry::edgeSide(b.entry.edge, b.entry.which, b.rest));
-  b.caseDegenerate.clear();
+  b.updates[0].incoming = b.updates[1].incoming = 0;
   b.relayApexes.clear();
   b.counters = {};
   b.propagated = 0;
@@ -612,7 +632,7 @@ void GeodesicSolver::runRound(const QueueEntry& top, double stopDistance) {
   if (useHelper_ && roundSize_ > 1) {
     helper_->post(&claimBatchesOnTheHelper, this);
     try {
-      claimBatches(&pool_);
+      claimBatches(solving_);
     } catch (...) {
       try {
         helper_->finish();  // its batches work on the solver too: done before this unwinds
@@ -622,24 +642,24 @@ void GeodesicSolver::runRound(const QueueEntry& top, double stopDistance) {
     }
     helper_->finish();
   } else {
-    claimBatches(&pool_);
+    claimBatches(solving_);
   }
   for (std::size_t i = 0; i < roundSize_; ++i) finishBatch(batches_[i]);
 }
 
-// Runs the round's batches not yet taken, one at a time, the lists they update allocating from
-// `pool` (this thread's).
-void GeodesicSolver::claimBatches(IntervalPool* pool) {
+// Runs the round's batches not yet taken, one at a time, with `worker`: this thread's pool and
+// buffers.
+void GeodesicSolver::claimBatches(Worker& worker) {
   for (;;) {
     const std::size_t i = roundNext_.fetch_add(1, std::memory_order_relaxed);
     if (i >= roundSize_) return;
-    runBatch(batches_[i], pool);
+    runBatch(batches_[i], worker);
   }
 }
 
 void GeodesicSolver::claimBatchesOnTheHelper(void* solver) {
   auto* s = static_cast<GeodesicSolver*>(solver);
-  s->claimBatches(&s->helperPool_);
+  s->claimBatches(s->helping_);
 }
 
 // A window is pending on its edge side: the side is queued again when the window's smallest
@@ -700,12 +720,17 @@ void GeodesicSolver::startReleasing() {
 // length bounds its distance on [b0, b1]: it grows at slope at most 1), unless it waits in a later
 // one already. A reach not yet passed is all this has to get right to save memory; exactness
 // does not depend on it.
-void GeodesicSolver::fileForRelease(Index edge, const Interval& w) {
+void GeodesicSolver::fileForRelease(Index edge, double reach) {
   std::uint32_t& state = releaseState_[edge];
   if (state == kKept) return;
-  const double reach = (w.distanceAt(w.b0) + w.length()) / queueBucketWidth_;
   if (state != 0 && reach < static_cast<double>(state)) return;  // waits in a later bucket
   fileInBucket(edge, reach);
+}
+
+// How far w reaches, in bucket widths. (A run's windows file their edge once, at the largest:
+// the bucket the edge ends in is the same as when each files it in turn.)
+double GeodesicSolver::releaseReach(const Interval& w) const {
+  return (w.distanceAt(w.b0) + w.length()) / queueBucketWidth_;
 }
 
 // Files `edge` in the bucket of `reach` (in bucket widths) or, when the wavefront's release has
@@ -768,7 +793,7 @@ void GeodesicSolver::addInterval(Index edge, const Interval& w) {
       releaseBroken_ = true;  // the solve starts again keeping every list
       return;
     }
-    fileForRelease(edge, w);
+    fileForRelease(edge, releaseReach(w));
   }
   ++stats_.intervalsCreated;
   const double length = mesh_.edge(edge).length;
@@ -777,7 +802,8 @@ void GeodesicSolver::addInterval(Index edge, const Interval& w) {
   // CLI's progress line 8 % of bunny00's solve at a terminal.
   if (observerReadsLists_) before_.assign(list.intervals().begin(), list.intervals().end());
   list.insert(w, length, report_, scratch_);
-  afterUpdate(edge, report_);
+  countRepairs(counters_, report_);
+  afterUpdate(edge, report_.first, report_.last, report_.fanLostAtVertex);
   if (hooked()) {
     const std::span<const Interval> before =
         observerReadsLists_ ? std::span<const Interval>(before_) : std::span<const Interval>();
@@ -785,19 +811,25 @@ void GeodesicSolver::addInterval(Index edge, const Interval& w) {
   }
 }
 
-// What an update of `edge` (`report`) means for the queue and the vertices.
-void GeodesicSolver::afterUpdate(Index edge, const EdgeUpdateReport& report) {
-  const double length = mesh_.edge(edge).length;
-  EdgeIntervals& list = edges_[edge];
+// The repairs an update of an edge made, into `counters`.
+void GeodesicSolver::countRepairs(DegeneracyCounters& counters, const EdgeUpdateReport& report) {
   for (DegeneracyKind k :
        {DegeneracyKind::D1, DegeneracyKind::D2, DegeneracyKind::D3, DegeneracyKind::D4})
-    counters_[k] += report.degeneracies[k];  // (Algorithm 2 finds only these)
-  counters_.tieStripsKept += report.degeneracies.tieStripsKept;
+    counters[k] += report.degeneracies[k];  // (Algorithm 2 finds only these)
+  counters.tieStripsKept += report.degeneracies.tieStripsKept;
+}
+
+// What an update of `edge` that rewrote its list's [first, last) means for the queue and the
+// vertices (EdgeUpdateReport's fields of the same names).
+void GeodesicSolver::afterUpdate(Index edge, std::size_t first, std::size_t last,
+                                 std::uint8_t fanLostAtVertex) {
+  const double length = mesh_.edge(edge).length;
+  EdgeIntervals& list = edges_[edge];
 
   // Every pending interval that is new or whose smallest distance moved may lower its edge
   // side's key; the others keep theirs, which the side's key is no larger than.
   const std::span<Interval> all = list.intervals();
-  for (std::size_t i = report.first; i < report.last; ++i) {
+  for (std::size_t i = first; i < last; ++i) {
     Interval& iv = all[i];
     if (!(iv.flags & Interval::kChanged)) continue;
     iv.flags &= static_cast<std::uint8_t>(~Interval::kChanged);
@@ -808,14 +840,13 @@ void GeodesicSolver::afterUpdate(Index edge, const EdgeUpdateReport& report) {
   const auto intervals = list.intervals();
   if (!intervals.empty()) {
     const Edge& E = mesh_.edge(edge);
-    if (report.fanLostAtVertex != 0) [[unlikely]] {
+    if (fanLostAtVertex != 0) [[unlikely]] {
       for (int k = 0; k < 2; ++k)
-        if (report.fanLostAtVertex & (1 << k))
-          relayFanThroughVertex(E.vertex[k], counters_.d1FansRelayed);
+        if (fanLostAtVertex & (1 << k)) relayFanThroughVertex(E.vertex[k], counters_.d1FansRelayed);
     }
-    if (report.first == 0 && intervals.front().b0 == 0.0)
+    if (first == 0 && intervals.front().b0 == 0.0)
       updateVertex(E.vertex[0], intervals.front().distanceAt(0.0));
-    if (report.last == intervals.size() && intervals.back().b1 == length)
+    if (last == intervals.size() && intervals.back().b1 == length)
       updateVertex(E.vertex[1], intervals.back().distanceAt(length));
   }
 }

@@ -151,7 +151,8 @@ class GeodesicSolver {
   bool runWavefront(const SolveOptions& inMeshUnits, std::span<const ResolvedPoint> targets,
                     double& radius);
   void startReleasing();
-  void fileForRelease(Index edge, const Interval& w);
+  void fileForRelease(Index edge, double reach);
+  double releaseReach(const Interval& w) const;
   void fileInBucket(Index edge, double reach);
   void releasePassedEdges(double bound);
   void requireAllLists(const char* what) const;
@@ -168,6 +169,14 @@ class GeodesicSolver {
       cases.clear();
     }
   };
+  /// What finishBatch needs of a batch's update of one child edge.
+  struct ChildEdgeUpdate {
+    std::size_t incoming = 0;         // the run's children (0: none, no update)
+    bool updated = false;             // false: the run reached a released list (not updated)
+    std::size_t first = 0, last = 0;  // EdgeUpdateReport's
+    std::uint8_t fanLostAtVertex = 0;
+    double reach = 0.0;  // the run's farthest releaseReach, when releasing
+  };
   /// One batch: the pending windows of an edge side up to a distance, propagated across the
   /// face beyond it, their children merged into the face's other two edges (Algorithm 2, one run
   /// per edge). runBatch writes only what the batch holds, the edge side's own windows and key,
@@ -181,13 +190,7 @@ class GeodesicSolver {
     Index face = kNoIndex;
     const FaceFrame* frame = nullptr;
     double rest = kInfinity;  // the smallest distance of the side's windows left pending
-    Run runs[2];
-    EdgeUpdateReport reports[2];
-    bool updated[2] = {false, false};  // false: the run reached a released list (not updated)
-    std::vector<Interval> before[2];   // (for an observer that reads the lists)
-    std::vector<std::uint8_t> caseDegenerate;
-    std::vector<Interval> scratch;
-    IntervalList work;  // (EdgeIntervals::insertRun's copy of a slice)
+    ChildEdgeUpdate updates[2];  // on the face's edges e1 and e2
     DegeneracyCounters counters;
     std::uint64_t propagated = 0;
     std::vector<Index> relayApexes;  // G2–G5 apexes to relay the fan through
@@ -202,17 +205,39 @@ class GeodesicSolver {
       std::size_t numChildren = 0;
     };
     std::vector<Propagation> propagations;
+    /// For an observer: each child edge's update as it shows it (EdgeUpdateEvent).
+    struct Shown {
+      std::vector<Interval> before;  // (for an observer that reads the lists)
+      std::vector<Interval> incoming;
+      std::vector<Fig6Branch> branches;
+      EdgeUpdateReport report;
+    };
+    Shown shown[2];
   };
   void addInterval(Index edge, const Interval& w);
   /// At most this many batches run in one round (runRound).
   static constexpr std::size_t kRoundBatches = 4;
   void runRound(const QueueEntry& top, double stopDistance);
-  void claimBatches(IntervalPool* pool);
+  /// What a thread of the solve runs batches with: the pool the lists it updates allocate from,
+  /// and Algorithm 2's buffers (one set per thread, not per batch: they stay in its cache).
+  struct alignas(64) Worker {
+    explicit Worker(IntervalPool* p) : pool(p) {}
+    IntervalPool* pool;
+    std::vector<Interval> scratch;
+    IntervalList work;  // (EdgeIntervals::insertRun's copy of a slice)
+    /// The children of the batch it runs, on the face's edges e1 and e2, and whether each of its
+    /// cases is degenerate so far; and its updates' report.
+    Run runs[2];
+    std::vector<std::uint8_t> caseDegenerate;
+    EdgeUpdateReport report;
+  };
+  void claimBatches(Worker& worker);
   static void claimBatchesOnTheHelper(void* solver);
   void prepareBatch(Batch& b, const QueueEntry& entry, double stopDistance) const;
-  void runBatch(Batch& b, IntervalPool* pool);
+  void runBatch(Batch& b, Worker& worker);
   void finishBatch(Batch& b);
-  void afterUpdate(Index edge, const EdgeUpdateReport& report);
+  static void countRepairs(DegeneracyCounters& counters, const EdgeUpdateReport& report);
+  void afterUpdate(Index edge, std::size_t first, std::size_t last, std::uint8_t fanLostAtVertex);
   void queuePending(Index edge, const Interval& w);
   void prefetchAhead() const;
   void updateVertex(Index v, double d);
@@ -240,7 +265,8 @@ class GeodesicSolver {
   }
   /// One window of `edge` across face f (the one across from its source), fr: f on `edge`; its
   /// children go into b's runs.
-  void propagate(Batch& b, Index edge, const Interval& w, Index f, const FaceFrame& fr);
+  void propagate(Batch& b, Worker& worker, Index edge, const Interval& w, Index f,
+                 const FaceFrame& fr);
   void finish(const SolveOptions& options, double radius);
   /// Whether to build and send observer events. GEODEX_NO_OBSERVER_HOOKS compiles the hooks out
   /// (only for bench/hooks_overhead, which measures what the null check costs a release solve).
@@ -292,6 +318,8 @@ class GeodesicSolver {
   /// The round's batches: the one taken from the queue's front first (runRound).
   Batch batches_[kRoundBatches];
   std::size_t roundSize_ = 0;
+  Worker solving_{&pool_};        // the thread that called solve()
+  Worker helping_{&helperPool_};  // the helper thread
   // The next batch of the round a thread may take (claimBatches); apart from the batches.
   alignas(64) std::atomic<std::size_t> roundNext_{0};
   std::unique_ptr<detail::HelperThread> helper_;  // made by the first solve with two threads
