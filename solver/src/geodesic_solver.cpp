@@ -907,8 +907,9 @@ void GeodesicSolver::updateVertex(Index v, double d) {
   if (emitsWindows_[v]) queue_.push(QueueEntry::pseudoSource(v, d));
 }
 
-// Step 3 took a D1 sliver ending at v into a neighbour of another pseudo-source. On its range the
-// neighbour is as short, to D1's slack; beyond v the sliver's source, when nearer, fans out wider
+// Step 3 took a D1 sliver ending at v into a neighbour of another pseudo-source, or such a sliver
+// lost there outright to one (reportFanOfALostSliver). On its range the neighbour is as short, to
+// D1's slack; beyond v the sliver's source, when nearer, fans out wider
 // than the neighbour's rays, and what only it reached is left to longer windows: behind a hole's
 // corner, on a line through two more vertices, a thin wedge beyond them came out 9 % too long
 // (corpus/fuzz_solver/regress/vertex-agreement-d1-sliver-at-a-vertex-loses-its-fan-beyond-it).

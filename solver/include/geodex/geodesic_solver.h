@@ -264,7 +264,7 @@ class GeodesicSolver {
     return 20 * f * f;
   }
   /// One window of `edge` across face f (the one across from its source), fr: f on `edge`; its
-  /// children go into b's runs.
+  /// children go into the runs of `worker` (the thread running batch b), its counts into b.
   void propagate(Batch& b, Worker& worker, Index edge, const Interval& w, Index f,
                  const FaceFrame& fr);
   void finish(const SolveOptions& options, double radius);
