@@ -166,6 +166,9 @@ bool GeodesicSolver::runWavefront(const SolveOptions& inMeshUnits,
       }
       continue;
     }
+    // Stale: a smaller key was queued for the side since, or a round has run its batch. (Five of
+    // six edge-side entries on armadillo from v:0; prepareBatch would find the same.)
+    if (top.key != pendingKey_[2 * std::size_t{top.edge} + top.which]) continue;
     runRound(top, inMeshUnits.stopDistance);
     if (releaseBroken_) return false;
 #if defined(GEODEX_FUZZING_BUILD_MODE)
@@ -313,6 +316,17 @@ void GeodesicSolver::seedCorner(Index v, double d) {
 void GeodesicSolver::createPseudoSourceWindows(Index v, double sigma, std::int32_t origin,
                                                int depth, Index from) {
   ++stats_.pseudoSourceEvents;
+  // The faces, frames and edges below are rarely in cache (a vertex is reached once or twice):
+  // asked for at once, their misses overlap instead of following one another.
+  for (Index f : mesh_.vertexFaces(v)) {
+    __builtin_prefetch(&mesh_.face(f));
+    __builtin_prefetch(&mesh_.frameByLocal(f, 0));
+    __builtin_prefetch(&mesh_.frameByLocal(f, 2));
+  }
+  for (Index e : mesh_.vertexEdges(v)) {
+    __builtin_prefetch(&mesh_.edge(e));
+    __builtin_prefetch(&edges_[e]);
+  }
   for (Index f : mesh_.vertexFaces(v)) {
     const auto& corners = mesh_.face(f);
     const int k = corners[0] == v ? 0 : (corners[1] == v ? 1 : 2);
@@ -466,6 +480,8 @@ void GeodesicSolver::propagate(Batch& b, Worker& worker, Index edge, const Inter
 // side since, or another entry's batch has run.
 void GeodesicSolver::prepareBatch(Batch& b, const QueueEntry& entry, double stopDistance) const {
   b.entry = entry;
+  b.done.store(false, std::memory_order_relaxed);  // (published by the round's post)
+  b.failed = false;
   b.upTo = std::min(entry.key + batchSlack_, stopDistance);
   b.live = entry.key == pendingKey_[2 * std::size_t{entry.edge} + entry.which];
   b.face = mesh_.edge(entry.edge).face[1 - entry.which];
@@ -592,16 +608,16 @@ void GeodesicSolver::finishBatch(Batch& b) {
 }
 
 // How far behind the queue's front runRound looks for batches to run beside the front's.
-constexpr std::uint32_t kRoundLookahead = 32;
+constexpr std::uint32_t kRoundLookahead = 64;
 
 // A round: the batch of `top`, just taken from the queue, and up to kRoundBatches − 1 more of the
 // entries behind it (in its bucket's page) that are live edge sides within the stop and share no
 // edge, crossed or child, with any batch of the round before them. Batches with no edge in common
 // read and write nothing the others do (runBatch), so they run in any order or at once: each
 // thread of the solve takes the round's batches one at a time until none is left
-// (claimBatches), and then this one finishes them in the round's order. The entries of the later
-// batches stay in the queue and are stale once they have run (their sides' keys are then beyond
-// them). That changes the wavefront's order, not its result: Algorithm 2 keeps the pointwise
+// (claimBatches, finishRound), and this one finishes them in the round's order. The entries of the
+// later batches stay in the queue and are stale once they have run (their sides' keys are then
+// beyond them). That changes the wavefront's order, not its result: Algorithm 2 keeps the pointwise
 // minimum of every window an edge receives, in whatever order, and a vertex reached again at a
 // smaller distance emits its windows again. The rounds are the same whatever the threads.
 void GeodesicSolver::runRound(const QueueEntry& top, double stopDistance) {
@@ -629,22 +645,48 @@ void GeodesicSolver::runRound(const QueueEntry& top, double stopDistance) {
   }
   stats_.batchesBesideTheFront += roundSize_ - 1;
   roundNext_.store(0, std::memory_order_relaxed);
-  if (useHelper_ && roundSize_ > 1) {
-    helper_->post(&claimBatchesOnTheHelper, this);
-    try {
-      claimBatches(solving_);
-    } catch (...) {
+  const bool helped = useHelper_ && roundSize_ > 1;
+  if (helped) helper_->post(&claimBatchesOnTheHelper, this);
+  try {
+    finishRound();
+  } catch (...) {
+    if (helped) {
       try {
         helper_->finish();  // its batches work on the solver too: done before this unwinds
       } catch (...) {       // (this thread's error is the one reported)
       }
-      throw;
     }
-    helper_->finish();
-  } else {
-    claimBatches(solving_);
+    throw;
   }
-  for (std::size_t i = 0; i < roundSize_; ++i) finishBatch(batches_[i]);
+  if (helped) helper_->finish();  // (rethrows the error of a batch it ran)
+}
+
+// This thread's share of the round: it takes the round's batches one at a time, as the helper
+// does, and finishes them in the round's order, each as soon as it and those before it have run.
+// finishBatch writes nothing a batch of the round reads or writes (the queue, the vertices, the
+// counts, the release bookkeeping and its own child edges' flags: no edge is shared), so this
+// thread finishes its batches while the helper still runs a later one, instead of waiting for it
+// first. An observer's events wait for the whole round: an observer may read the solver.
+void GeodesicSolver::finishRound() {
+  std::size_t finished = 0;
+  const auto finishThoseRun = [&] {
+    for (; finished < roundSize_; ++finished) {
+      Batch& b = batches_[finished];
+      if (!b.done.load(std::memory_order_acquire) || b.failed) return;
+      finishBatch(b);
+    }
+  };
+  for (;;) {
+    if (!hooked()) finishThoseRun();
+    const std::size_t i = roundNext_.fetch_add(1, std::memory_order_relaxed);
+    if (i >= roundSize_) break;
+    runClaimedBatch(batches_[i], solving_);
+  }
+  for (std::size_t i = finished; i < roundSize_; ++i) {
+    detail::awaitSet(batches_[i].done);
+    if (batches_[i].failed) return;  // the helper's error: helper_->finish() rethrows it
+  }
+  finishThoseRun();
 }
 
 // Runs the round's batches not yet taken, one at a time, with `worker`: this thread's pool and
@@ -653,8 +695,20 @@ void GeodesicSolver::claimBatches(Worker& worker) {
   for (;;) {
     const std::size_t i = roundNext_.fetch_add(1, std::memory_order_relaxed);
     if (i >= roundSize_) return;
-    runBatch(batches_[i], worker);
+    runClaimedBatch(batches_[i], worker);
   }
+}
+
+// Runs batch b and tells the round it has: done, and failed when it threw.
+void GeodesicSolver::runClaimedBatch(Batch& b, Worker& worker) {
+  try {
+    runBatch(b, worker);
+  } catch (...) {
+    b.failed = true;
+    b.done.store(true, std::memory_order_release);
+    throw;
+  }
+  b.done.store(true, std::memory_order_release);
 }
 
 void GeodesicSolver::claimBatchesOnTheHelper(void* solver) {
@@ -870,10 +924,8 @@ bool GeodesicSolver::dominatedAtAnEdgeEnd(Index edge, const Interval& w) {
     const double viaEnd = vertexDistance_[a] + (k == 0 ? w.b1 : E.length - w.b0);
     const double own = w.distanceAt(k == 0 ? w.b1 : w.b0);
     if (!(viaEnd < own)) continue;
-    double longestAtEnd = 0.0;
-    for (Index e : mesh_.vertexEdges(a))
-      longestAtEnd = std::max(longestAtEnd, mesh_.edge(e).length);
-    if (!(viaEnd < own - tol::vertexAgreementTolerance(own, E.length, longestAtEnd))) continue;
+    if (!(viaEnd < own - tol::vertexAgreementTolerance(own, E.length, mesh_.longestEdgeAt(a))))
+      continue;
     ++stats_.windowsDroppedAtEdgeEnd;
     if (hooked())
       observer_->onWindowDropped({edge, E.length, w, a, vertexDistance_[a], DropRule::EdgeEnd});

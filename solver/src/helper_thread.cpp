@@ -43,6 +43,13 @@ std::uint32_t awaitChange(std::atomic<std::uint32_t>& state, Stay stay) {
 
 }  // namespace
 
+void awaitSet(const std::atomic<bool>& flag) {
+  for (unsigned n = 1; !flag.load(std::memory_order_acquire); ++n) {
+    cpuRelax();
+    if (n % 1024 == 0) std::this_thread::yield();  // (the other thread may have lost its core)
+  }
+}
+
 HelperThread::HelperThread() : thread_([this] { loop(); }) {}
 
 HelperThread::~HelperThread() {

@@ -12,6 +12,9 @@
 
 namespace geodex::detail {
 
+/// Returns once `flag` is set by another thread that is running (spinning, then yielding).
+void awaitSet(const std::atomic<bool>& flag);
+
 class HelperThread {
  public:
   using Job = void (*)(void* context);

@@ -247,6 +247,9 @@ void Mesh::buildVertexAdjacency() {
       vertexEdgeList_[fill[edges_[e].vertex[1]]++] = e;
     }
   }
+  longestEdgeAt_.assign(nv, 0.0);
+  for (const Edge& e : edges_)
+    for (const Index v : e.vertex) longestEdgeAt_[v] = std::max(longestEdgeAt_[v], e.length);
 }
 
 void Mesh::sumVertexAngles() {

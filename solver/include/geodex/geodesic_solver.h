@@ -49,7 +49,7 @@ struct SolveOptions {
   bool vertexDistancesOnly = false;
   /// Threads for the wavefront: 1, or 2 to share the batches of each round between the thread
   /// that called solve() and a helper thread (a round: the batch of windows taken from the queue
-  /// and up to three from just behind it that touch none of its edges nor each other's). The
+  /// and up to eleven from just behind it that touch none of its edges nor each other's). The
   /// rounds are the same whatever the threads, so the results are the same to the bit. More than
   /// 2 counts as 2. An observer's events all come from the thread that called solve(), in the
   /// same order.
@@ -194,6 +194,9 @@ class GeodesicSolver {
     DegeneracyCounters counters;
     std::uint64_t propagated = 0;
     std::vector<Index> relayApexes;  // G2–G5 apexes to relay the fan through
+    /// Set by the thread that ran it, once it has (release): finishBatch may then read it.
+    std::atomic<bool> done{false};
+    bool failed = false;  // its runBatch threw (set before done)
     /// For an observer: each case as propagate saw it (PropagationEvent), shown by finishBatch.
     struct Propagation {
       Index face;
@@ -216,7 +219,7 @@ class GeodesicSolver {
   };
   void addInterval(Index edge, const Interval& w);
   /// At most this many batches run in one round (runRound).
-  static constexpr std::size_t kRoundBatches = 4;
+  static constexpr std::size_t kRoundBatches = 12;
   void runRound(const QueueEntry& top, double stopDistance);
   /// What a thread of the solve runs batches with: the pool the lists it updates allocate from,
   /// and Algorithm 2's buffers (one set per thread, not per batch: they stay in its cache).
@@ -232,6 +235,8 @@ class GeodesicSolver {
     EdgeUpdateReport report;
   };
   void claimBatches(Worker& worker);
+  void runClaimedBatch(Batch& b, Worker& worker);
+  void finishRound();
   static void claimBatchesOnTheHelper(void* solver);
   void prepareBatch(Batch& b, const QueueEntry& entry, double stopDistance) const;
   void runBatch(Batch& b, Worker& worker);

@@ -130,6 +130,8 @@ class Mesh {
     return {vertexEdgeList_.data() + vertexEdgeStart_[v],
             vertexEdgeList_.data() + vertexEdgeStart_[v + 1]};
   }
+  /// The length of the longest edge at v (0 at a vertex no edge has).
+  double longestEdgeAt(Index v) const { return longestEdgeAt_[v]; }
   /// The edge joining a and b, or kNoIndex.
   Index findEdge(Index a, Index b) const;
   /// Position k (0..2) of edge e in faceEdges(f); -1 if e is not an edge of f.
@@ -182,6 +184,7 @@ class Mesh {
   std::vector<std::uint8_t> pseudoSource_;
   std::vector<Index> vertexFaceStart_, vertexFaceList_;
   std::vector<Index> vertexEdgeStart_, vertexEdgeList_;
+  std::vector<double> longestEdgeAt_;
   std::vector<Index> component_;
   std::size_t numComponents_ = 0;
   MeshUnit unit_;
