@@ -57,6 +57,15 @@ GeodesicSolver::GeodesicSolver(const Mesh& mesh) : mesh_(mesh) {
   const double width = kQueueBucketEdges * median;
   queueBucketWidth_ = width > 0.0 && std::isfinite(width) ? width : 1.0;
   batchSlack_ = queueBucketWidth_ * (kBatchSlackEdges / kQueueBucketEdges);
+  // The windows on side s of edge e cross the face edge(e).face[1 − s].
+  sides_.resize(2 * mesh_.numEdges());
+  for (Index f = 0; f < mesh_.numFaces(); ++f) {
+    for (int k = 0; k < 3; ++k) {
+      const FaceFrame& fr = mesh_.frameByLocal(f, k);
+      const auto side = static_cast<std::size_t>(1 - mesh_.sideOf(fr.edge, f));
+      sides_[2 * std::size_t{fr.edge} + side].childEdges = {fr.edgeToV0, fr.edgeToV2};
+    }
+  }
 }
 
 GeodesicSolver::~GeodesicSolver() = default;
@@ -81,7 +90,7 @@ void GeodesicSolver::reset() {
   vertexDistance_.assign(mesh_.numVertices(), kInfinity);
   emitsWindows_.resize(mesh_.numVertices());
   for (Index v = 0; v < mesh_.numVertices(); ++v) emitsWindows_[v] = mesh_.isPseudoSourceVertex(v);
-  pendingKey_.assign(2 * mesh_.numEdges(), kInfinity);
+  for (EdgeSide& side : sides_) side.pendingKey = kInfinity;
   sources_.clear();
   queue_.reset(queueBucketWidth_, mesh_.numEdges());  // a ring of at most one bucket per edge
   counters_ = {};
@@ -168,7 +177,7 @@ bool GeodesicSolver::runWavefront(const SolveOptions& inMeshUnits,
     }
     // Stale: a smaller key was queued for the side since, or a round has run its batch. (Five of
     // six edge-side entries on armadillo from v:0; prepareBatch would find the same.)
-    if (top.key != pendingKey_[2 * std::size_t{top.edge} + top.which]) continue;
+    if (top.key != pendingKey(top.edge, top.which)) continue;
     runRound(top, inMeshUnits.stopDistance);
     if (releaseBroken_) return false;
 #if defined(GEODEX_FUZZING_BUILD_MODE)
@@ -483,7 +492,7 @@ void GeodesicSolver::prepareBatch(Batch& b, const QueueEntry& entry, double stop
   b.done.store(false, std::memory_order_relaxed);  // (published by the round's post)
   b.failed = false;
   b.upTo = std::min(entry.key + batchSlack_, stopDistance);
-  b.live = entry.key == pendingKey_[2 * std::size_t{entry.edge} + entry.which];
+  b.live = entry.key == sides_[2 * std::size_t{entry.edge} + entry.which].pendingKey;
   b.face = mesh_.edge(entry.edge).face[1 - entry.which];
   b.frame = b.live && b.face != kNoIndex ? &mesh_.frame(b.face, entry.edge) : nullptr;
 }
@@ -492,13 +501,13 @@ void GeodesicSolver::runBatch(Batch& b, Worker& worker) {
   if (!b.live) return;
   const Index edge = b.entry.edge;
   const auto side = static_cast<std::uint8_t>(b.entry.which);
-  double& pendingKey = pendingKey_[2 * std::size_t{edge} + side];
+  double& sideKey = pendingKey(edge, side);
   const Index f = b.face;
   b.rest = kInfinity;
   if (f == kNoIndex) {  // a boundary: nothing to cross (Algorithm 2 may have re-opened a window)
     for (Interval& w : edges_[edge].intervals())
       if (w.side == side) w.markPropagated();
-    pendingKey = kInfinity;
+    sideKey = kInfinity;
     return;
   }
   const FaceFrame& fr = *b.frame;
@@ -517,7 +526,7 @@ void GeodesicSolver::runBatch(Batch& b, Worker& worker) {
     const Interval window = w;
     propagate(b, worker, edge, window, f, fr);
   }
-  pendingKey = b.rest;
+  sideKey = b.rest;
   for (int k = 0; k < 2; ++k) {
     Run& run = worker.runs[k];
     ChildEdgeUpdate& u = b.updates[k];
@@ -630,13 +639,10 @@ void GeodesicSolver::runRound(const QueueEntry& top, double stopDistance) {
     for (std::uint32_t k = 0; k < kRoundLookahead && roundSize_ < kRoundBatches; ++k) {
       const QueueEntry* e = queue_.peek(k);
       if (e == nullptr) break;
-      if (e->edge == kNoIndex || e->key > stopDistance ||
-          e->key != pendingKey_[2 * std::size_t{e->edge} + e->which])
-        continue;
-      const Index f = mesh_.edge(e->edge).face[1 - e->which];
-      if (f == kNoIndex) continue;
-      const FaceFrame& ef = mesh_.frame(f, e->edge);
-      const std::array<Index, 3> edges{e->edge, ef.edgeToV0, ef.edgeToV2};
+      if (e->edge == kNoIndex || e->key > stopDistance) continue;
+      const EdgeSide& side = sides_[2 * std::size_t{e->edge} + e->which];
+      if (e->key != side.pendingKey || side.childEdges[0] == kNoIndex) continue;
+      const std::array<Index, 3> edges{e->edge, side.childEdges[0], side.childEdges[1]};
       const auto end = taken.begin() + static_cast<std::ptrdiff_t>(numTaken);
       if (std::find_first_of(taken.begin(), end, edges.begin(), edges.end()) != end) continue;
       prepareBatch(batches_[roundSize_++], *e, stopDistance);
@@ -720,9 +726,9 @@ void GeodesicSolver::claimBatchesOnTheHelper(void* solver) {
 // distance is below every key queued for it.
 void GeodesicSolver::queuePending(Index edge, const Interval& w) {
   const double key = w.minDistance();
-  double& pendingKey = pendingKey_[2 * std::size_t{edge} + w.side];
-  if (!(key < pendingKey)) return;
-  pendingKey = key;
+  double& sideKey = pendingKey(edge, w.side);
+  if (!(key < sideKey)) return;
+  sideKey = key;
   queue_.push(QueueEntry::edgeSide(edge, w.side, key));
 }
 
@@ -817,8 +823,7 @@ void GeodesicSolver::releasePassedEdges(double bound) {
     for (const Index e : edges) {
       std::uint32_t& state = releaseState_[e];
       if (state != k + 1) continue;  // filed again later, released or kept
-      if (pendingKey_[2 * std::size_t{e}] != kInfinity ||
-          pendingKey_[2 * std::size_t{e} + 1] != kInfinity) {
+      if (pendingKey(e, 0) != kInfinity || pendingKey(e, 1) != kInfinity) {
         fileInBucket(e, bound / queueBucketWidth_);  // to be looked at again from here
         continue;
       }

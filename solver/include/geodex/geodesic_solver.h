@@ -137,7 +137,7 @@ class GeodesicSolver {
   /// What the wavefront queue holds: one side of an edge with windows still to propagate, keyed
   /// by the smallest distance among them, or a vertex to turn into a pseudo-source.
   struct QueueEntry {
-    double key;  ///< pendingKey_ of the edge side when queued, or the vertex's distance
+    double key;  ///< the edge side's pending key when queued, or the vertex's distance
     Index edge;  ///< kNoIndex: a pseudo-source event of vertex `which`
     std::uint32_t which;  ///< the side (Interval::side) of the windows, or the vertex
 
@@ -302,9 +302,18 @@ class GeodesicSolver {
   BucketQueue<QueueEntry> queue_;
   double queueBucketWidth_ = 1.0;
   double batchSlack_ = 1.0;  // kBatchSlackEdges in mesh units
-  /// Per edge side (2 × edge + Interval::side): no pending window there has a smallest distance
-  /// below it (+inf: none pending); the key of its newest queue entry.
-  std::vector<double> pendingKey_;
+  /// Per edge side (2 × edge + Interval::side): its pending key, no pending window there has a
+  /// smallest distance below it (+inf: none pending), the key of its newest queue entry; and the
+  /// face's two other edges its batches' children go to (kNoIndex at a boundary), for runRound,
+  /// which tests up to kRoundLookahead entries a round: one cache line an entry, not four.
+  struct EdgeSide {
+    double pendingKey = kInfinity;
+    std::array<Index, 2> childEdges{kNoIndex, kNoIndex};
+  };
+  std::vector<EdgeSide> sides_;
+  double& pendingKey(Index edge, std::uint32_t side) {
+    return sides_[2 * std::size_t{edge} + side].pendingKey;
+  }
   // SolveOptions::vertexDistancesOnly: edges wait in buckets of the queue's width, by how far the
   // windows they received reach, for the wavefront to leave them behind (releasePassedEdges).
   bool releasing_ = false;      // this attempt releases lists
