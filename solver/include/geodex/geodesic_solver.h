@@ -304,11 +304,13 @@ class GeodesicSolver {
   double batchSlack_ = 1.0;  // kBatchSlackEdges in mesh units
   /// Per edge side (2 × edge + Interval::side): its pending key, no pending window there has a
   /// smallest distance below it (+inf: none pending), the key of its newest queue entry; and the
-  /// face's two other edges its batches' children go to (kNoIndex at a boundary), for runRound,
-  /// which tests up to kRoundLookahead entries a round: one cache line an entry, not four.
-  struct EdgeSide {
+  /// face's two other edges its batches' children go to (kNoIndex at a boundary) and its frame,
+  /// for runRound, which tests up to kRoundLookahead entries a round: one cache line an entry,
+  /// not four.
+  struct alignas(32) EdgeSide {  // (an edge's two sides on one cache line)
     double pendingKey = kInfinity;
     std::array<Index, 2> childEdges{kNoIndex, kNoIndex};
+    Index frame = kNoIndex;  // 3 × face + the edge's place in it (Mesh::frameByLocal)
   };
   std::vector<EdgeSide> sides_;
   double& pendingKey(Index edge, std::uint32_t side) {
