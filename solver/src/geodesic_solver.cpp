@@ -43,8 +43,11 @@ constexpr double kQueueBucketEdges = 0.5;
 // (runBatch), in median edge lengths: a window's children lie up to an edge beyond it
 // anyway. Measured on bunny00 / armadillo / fandisk: 0.1–0.4 % more windows than one by one at
 // 0.5, 1 or unbounded, and the solve 8–20 % faster; unbounded was as fast, but would let a far
-// window's descendants ride ahead of the front with every batch they share an edge with.
-constexpr double kBatchSlackEdges = 1.0;
+// window's descendants ride ahead of the front with every batch they share an edge with. With
+// the rounds (finishRound), 2 made fewer and larger batches and 0.2–0.4 % fewer windows than 1:
+// armadillo's solve 5 % faster on one thread and two, bunny00's 8 %, fandisk's 5 %, the
+// icosphere's the same; 3 no faster than 2.
+constexpr double kBatchSlackEdges = 2.0;
 
 GeodesicSolver::GeodesicSolver(const Mesh& mesh) : mesh_(mesh) {
   std::vector<double> lengths(mesh_.numEdges());
@@ -766,7 +769,7 @@ void GeodesicSolver::prefetchAhead() const {
 
 // ===  Releasing the lists the wavefront has left behind ==========================================
 // For a solve asked for vertex distances only. Measured from vertex 0, the edges that still hold a
-// pending window or are within four batch slacks of the queue's front carry at their most 6–8 %
+// pending window or are within two batch slacks of the queue's front carry at their most 6–8 %
 // of all intervals on bunny00, armadillo and the icosphere (docs/benchmarks.md, "Releasing the
 // lists the wavefront has left behind"): the rest is the wake, which no update reaches again but
 // the lists kept. Exactness does not rest on that: an edge is released only with nothing pending on
@@ -776,7 +779,7 @@ void GeodesicSolver::prefetchAhead() const {
 // its vertex distances are those of the solve that keeps them, to the bit.
 
 // How far behind the queue's lower bound an edge's reach must be before its list goes, in median
-// edge lengths: four batch slacks. (Of the 157 libcgal-demo and regression meshes from vertex 0,
+// edge lengths: two batch slacks. (Of the 157 libcgal-demo and regression meshes from vertex 0,
 // three start again at that distance: couplingdown, pinion and pinion_small.)
 constexpr double kReleaseSlackEdges = 4.0;
 
