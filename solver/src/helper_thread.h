@@ -1,8 +1,8 @@
 #pragma once
 // A second thread for the solve: it takes one job at a time, which the thread that posted it may
 // take back and run itself if the helper has not started it (a helper asleep or descheduled then
-// costs nothing but the post). GeodesicSolver::runWavefront posts the second of two independent
-// batches and runs the first itself.
+// costs nothing but the post). GeodesicSolver::runRound posts the taking of its round's batches;
+// both threads then take them one at a time (claimBatches, finishRound).
 
 #include <atomic>
 #include <cstdint>
