@@ -34,8 +34,7 @@ struct DistanceOptions {
   std::string outPath;
   bool stats = false;
   bool quiet = false;
-  // Two where the machine runs two threads at once: the results are the same to the bit with one.
-  unsigned threads = std::thread::hardware_concurrency() >= 2 ? 2 : 1;
+  unsigned threads = defaultThreads();
 };
 
 double secondsSince(std::chrono::steady_clock::time_point start) {
@@ -99,7 +98,7 @@ int runDistance(const DistanceOptions& o) {
   // Everything the user typed is checked before the (possibly long) load and solve.
   const std::vector<SurfacePoint> sources = parseSurfacePoints(o.sources, "--source");
   const std::vector<SurfacePoint> targets = parseSurfacePoints(o.targets, "--target");
-  if (o.threads < 1) throw InputError("usage", "--threads must be 1 or more, not 0");
+  checkThreads(o.threads);
   if (std::isnan(o.stopDistance) || o.stopDistance < 0.0) {
     throw InputError("usage", "--stop-distance must be a non-negative number, not " +
                                   formatDistance(o.stopDistance));
@@ -150,6 +149,20 @@ int runDistance(const DistanceOptions& o) {
 
 }  // namespace
 
+// Two where the machine runs two threads at once: the results are the same to the bit with one.
+unsigned defaultThreads() { return std::thread::hardware_concurrency() >= 2 ? 2 : 1; }
+
+void checkThreads(unsigned threads) {
+  if (threads < 1) throw InputError("usage", "--threads must be 1 or more, not 0");
+}
+
+void addThreadsOption(CLI::App* sub, unsigned& threads) {
+  sub->add_option("--threads", threads,
+                  "Threads for the wavefront, 1 or 2 (more count as 2; default 2 on a machine "
+                  "with two cores or more): the results are the same to the bit")
+      ->type_name("N");
+}
+
 Command addDistanceCommand(CLI::App& app) {
   auto o = std::make_shared<DistanceOptions>();
   CLI::App* sub = app.add_subcommand(
@@ -175,10 +188,7 @@ Command addDistanceCommand(CLI::App& app) {
                   "stdout; FILE.ply: the mesh as ASCII PLY with per-vertex distance (-1 where "
                   "unreachable) and viridis colours")
       ->type_name("FILE");
-  sub->add_option("--threads", o->threads,
-                  "Threads for the wavefront, 1 or 2 (more count as 2; default 2 on a machine "
-                  "with two cores or more): the distances are the same to the bit")
-      ->type_name("N");
+  addThreadsOption(sub, o->threads);
   sub->add_flag("--stats", o->stats,
                 "Print counts, distance range, time and the degeneracy table to stderr");
   sub->add_flag("--quiet,-q", o->quiet, "No progress on stderr (shown only on a terminal, for "

@@ -20,11 +20,13 @@ struct PathOptions {
   std::string meshPath;
   std::vector<std::string> sources;
   std::string target;
+  unsigned threads = defaultThreads();
 };
 
 int runPath(const PathOptions& o) {
   const std::vector<SurfacePoint> sources = parseSurfacePoints(o.sources, "--source");
   const SurfacePoint target = parseSurfacePoints({o.target}, "--target").front();
+  checkThreads(o.threads);
 
   const Mesh mesh = loadMeshWithWarnings(o.meshPath);
   checkPointsOnMesh(mesh, sources, "--source");
@@ -33,6 +35,7 @@ int runPath(const PathOptions& o) {
   GeodesicSolver solver(mesh);
   SolveOptions options;
   options.targets = {target};
+  options.threads = o.threads;
   solver.solve(sources, options);
   const GeodesicPath path = solver.path(target);
 
@@ -63,6 +66,7 @@ Command addPathCommand(CLI::App& app) {
   sub->add_option("--target,-t", o->target, "The path's end point: v:I, e:I,J,T or f:F,A,B,C")
       ->required()
       ->type_name("SPEC");
+  addThreadsOption(sub, o->threads);
   return {sub, [o] { return runPath(*o); }};
 }
 

@@ -35,6 +35,7 @@ struct RenderOptions {
   int height = 600;
   std::string view;
   bool quiet = false;
+  unsigned threads = defaultThreads();
 };
 
 /// "AZIMUTH,ELEVATION" in degrees; elevation within [-90, 90].
@@ -78,6 +79,7 @@ int runRender(const RenderOptions& o) {
   };
   checkSide("--width", o.width);
   checkSide("--height", o.height);
+  checkThreads(o.threads);
   settings.width = o.width;
   settings.height = o.height;
   if (!o.view.empty()) parseView(o.view, settings);
@@ -93,7 +95,9 @@ int runRender(const RenderOptions& o) {
   GeodesicSolver solver(mesh);
   ProgressReporter progress(solver);
   if (showProgress(o.quiet)) solver.setObserver(&progress);
-  solver.solve(sources);  // the whole field is drawn, so no early stop at the target
+  SolveOptions options;  // (the whole field is drawn, so no early stop at the target)
+  options.threads = o.threads;
+  solver.solve(sources, options);
   solver.setObserver(nullptr);
 
   std::vector<Vec3> sourcePositions;
@@ -147,6 +151,7 @@ Command addRenderCommand(CLI::App& app) {
                   "elevation above the xz-plane (default 30,20); orthographic, fitted to the "
                   "mesh")
       ->type_name("AZIMUTH,ELEVATION");
+  addThreadsOption(sub, o->threads);
   sub->add_flag("--quiet,-q", o->quiet, "No progress on stderr (shown only on a terminal, for "
                                         "solves longer than a second)");
   return {sub, [o] { return runRender(*o); }};

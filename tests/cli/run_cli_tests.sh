@@ -287,6 +287,39 @@ case_path_unreachable() {
   [[ $(cat "$OUT") == "length inf" ]] || fail "an unreachable target prints only 'length inf'"
 }
 
+# `--threads 1` and `--threads 2` print the same to the bit in every solving subcommand (the rounds
+# do not depend on the threads), and 0 threads is a usage error.
+# expect_same_with_threads ARGS…: geodex ARGS --threads 1 and --threads 2 succeed and print the same.
+expect_same_with_threads() {
+  run "$@" --threads 1
+  expect_rc 0
+  cp "$OUT" "$WORK/one-thread"
+  run "$@" --threads 2
+  expect_rc 0
+  cmp -s "$OUT" "$WORK/one-thread" || fail "--threads 2 printed another output than 1"
+}
+
+case_threads_give_the_same_output() {
+  local grid=$DATA/grid-with-holes-source-on-an-edge-line-through-a-flat-vertex.off
+  expect_same_with_threads distance "$grid" --source v:0 --source e:3,12,0.5
+  expect_same_with_threads path "$grid" --source v:0 --target e:3,12,0.5
+  run render "$grid" --source v:0 --width 64 --height 48 --quiet --threads 1 -o "$WORK/one.png"
+  expect_rc 0
+  run render "$grid" --source v:0 --width 64 --height 48 --quiet --threads 2 -o "$WORK/two.png"
+  expect_rc 0
+  cmp -s "$WORK/one.png" "$WORK/two.png" || fail "render: --threads 2 drew another image than 1"
+  local cmd
+  for cmd in distance path render; do
+    if [[ $cmd == render ]]; then
+      run render "$grid" --source v:0 --threads 0 -o "$WORK/zero.png"
+    else
+      run "$cmd" "$grid" --source v:0 --target v:1 --threads 0
+    fi
+    expect_usage_error
+    expect_err 'threads must be 1 or more'
+  done
+}
+
 case_info() {
   run info "$MESH"
   expect_rc 0
