@@ -394,6 +394,52 @@ TEST(EdgeEndRule, BoundaryVerticesWindowsIntoAPlanarGridAreDroppedAndEveryDistan
   EXPECT_GT(solveAPlanarGridCheckingEachDrop().windowsDroppedAtEdgeEnd, 0u);
 }
 
+// Whether the edge-end rule drops vertex v's window on edge (a, b) of face (v, a, b), reasoning
+// from a, when a second source s makes the path through a shorter than that window at b by
+// `delta`. a also has a 1.4e6-long edge (to c). Planar: v (0, 0), a (1, 0), b (1, 1),
+// s (1 + r, 0) with r = √2 − 1 − delta, c (1e6, −1e6); a is flat and inside, so it emits nothing.
+bool edgeEndRuleDropsVsWindowBesideALongEdge(double delta) {
+  const double r = std::numbers::sqrt2 - 1.0 - delta;
+  TriangleSoup soup;
+  soup.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(1 + r, 0, 0),
+                    Vec3(1e6, -1e6, 0)};
+  soup.faces = {{0, 1, 2}, {1, 3, 2}, {0, 4, 1}, {1, 4, 3}};
+  const Mesh mesh(soup);
+  Index ab = kNoIndex;
+  for (Index e = 0; e < mesh.numEdges(); ++e) {
+    const auto& ends = mesh.edge(e).vertex;
+    if (std::min(ends[0], ends[1]) == 1 && std::max(ends[0], ends[1]) == 2) ab = e;
+  }
+  struct Drops : SolverObserver {
+    Index edge = kNoIndex;
+    bool dropped = false;
+    void onWindowDropped(const WindowDroppedEvent& e) override {
+      // (The only other window on (a, b) from a pseudo-source is s's, made before a had a
+      // distance.)
+      if (e.rule == DropRule::EdgeEnd && e.edge == edge && e.vertex == 1) dropped = true;
+    }
+  } drops;
+  drops.edge = ab;
+  GeodesicSolver solver(mesh);
+  solver.setObserver(&drops);
+  // s first: its windows along its edges give a its distance before v's windows are made.
+  solver.solve(std::vector<SurfacePoint>{SurfacePoint::atVertex(3), SurfacePoint::atVertex(0)});
+  return drops.dropped;
+}
+
+// The edge-end rule's margin. d(a) is the smallest value a's edges gave at a, and from a long edge
+// it may lie below every real path by the rounding along that edge (tol::vertexAgreementTolerance:
+// 1.2e-10 of the longest edge at a, 1.7e-4 here): the rule drops a window only where the path
+// through a is shorter by more than that, and leaves the rest to Algorithm 2. d(a) is exact on this
+// mesh, so dropping the window at 1e-6 would do no harm here; what this pins is the margin itself,
+// which nothing else did (Mesh::longestEdgeAt returning 0 passed every test and the corpus). On a
+// mesh where d(a) comes low from a long edge, a smaller margin dropped windows that were needed
+// (the filter 93bcc7e removed).
+TEST(EdgeEndRule, KeepsAWindowWithinTheRoundingOfTheLongestEdgeAtTheEndAndDropsOneBeyondIt) {
+  EXPECT_FALSE(edgeEndRuleDropsVsWindowBesideALongEdge(1e-6));
+  EXPECT_TRUE(edgeEndRuleDropsVsWindowBesideALongEdge(1e-3));
+}
+
 // The along-edge rule: a pseudo-source's window along one of its own edges is dropped when the
 // edge's list covers it and no interval of it is longer (no distance grows faster along the edge
 // than that window does). The grid's boundary vertices are reached through their edges.

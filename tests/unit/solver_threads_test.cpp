@@ -4,7 +4,6 @@
 // the solving thread. The tsan preset runs these under ThreadSanitizer.
 #include <gtest/gtest.h>
 
-#include <cstring>
 #include <filesystem>
 #include <string>
 #include <thread>
@@ -15,6 +14,7 @@
 #include "geodex/mesh_io.h"
 #include "geodex/verify/invariant_checker.h"
 #include "geodex/verify/mesh_generators.h"
+#include "geodex/verify/same_solve.h"
 
 namespace geodex {
 namespace {
@@ -43,53 +43,6 @@ std::vector<std::vector<SurfacePoint>> sourceSets(const TriangleSoup& soup) {
   return {{v}, {e}, {p}, {SurfacePoint::atVertex(0), e, p}};
 }
 
-bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
-
-bool sameInterval(const Interval& a, const Interval& b) {
-  return sameBits(a.b0, b.b0) && sameBits(a.b1, b.b1) && sameBits(a.source.x(), b.source.x()) &&
-         sameBits(a.source.y(), b.source.y()) && sameBits(a.sigma, b.sigma) &&
-         a.origin == b.origin && a.side == b.side && a.flags == b.flags;
-}
-
-// Everything one solve gives that can be compared, with what it differs in first.
-std::string firstDifference(const GeodesicSolver& one, const GeodesicSolver& two, bool lists) {
-  const auto d1 = one.vertexDistances(), d2 = two.vertexDistances();
-  if (d1.size() != d2.size()) return "vertex count";
-  for (std::size_t v = 0; v < d1.size(); ++v)
-    if (!sameBits(d1[v], d2[v])) return "distance of vertex " + std::to_string(v);
-  const SolveStats &s1 = one.stats(), &s2 = two.stats();
-  if (s1.intervalsCreated != s2.intervalsCreated) return "intervalsCreated";
-  if (s1.intervalsPropagated != s2.intervalsPropagated) return "intervalsPropagated";
-  if (s1.pseudoSourceEvents != s2.pseudoSourceEvents) return "pseudoSourceEvents";
-  if (s1.maxIntervalsPerEdge != s2.maxIntervalsPerEdge) return "maxIntervalsPerEdge";
-  if (s1.intervalsAtEnd != s2.intervalsAtEnd) return "intervalsAtEnd";
-  if (s1.shadowsClosed != s2.shadowsClosed) return "shadowsClosed";
-  if (s1.windowsDroppedAtEdgeEnd != s2.windowsDroppedAtEdgeEnd) return "windowsDroppedAtEdgeEnd";
-  if (s1.windowsDroppedAlongEdge != s2.windowsDroppedAlongEdge) return "windowsDroppedAlongEdge";
-  if (s1.edgesReleased != s2.edgesReleased) return "edgesReleased";
-  if (s1.releaseUndone != s2.releaseUndone) return "releaseUndone";
-  if (s1.batchesBesideTheFront != s2.batchesBesideTheFront) return "batchesBesideTheFront";
-  if (!sameBits(s1.radius, s2.radius)) return "radius";
-  const DegeneracyCounters &c1 = one.counters(), &c2 = two.counters();
-  if (c1.count != c2.count || c1.cases != c2.cases || c1.degenerateCases != c2.degenerateCases ||
-      c1.zeroAreaFaces != c2.zeroAreaFaces ||
-      c1.sourceOnEdgeLineOutside != c2.sourceOnEdgeLineOutside ||
-      c1.childEdgesSeenFromOutside != c2.childEdgesSeenFromOutside ||
-      c1.d1FansRelayed != c2.d1FansRelayed || c1.apexFansRelayed != c2.apexFansRelayed ||
-      c1.tieStripsKept != c2.tieStripsKept)
-    return "degeneracy counters";
-  if (!lists) return "";
-  const auto e1 = one.edgeIntervals(), e2 = two.edgeIntervals();
-  for (std::size_t e = 0; e < e1.size(); ++e) {
-    const auto l1 = e1[e].intervals(), l2 = e2[e].intervals();
-    if (l1.size() != l2.size()) return "list length of edge " + std::to_string(e);
-    for (std::size_t i = 0; i < l1.size(); ++i)
-      if (!sameInterval(l1[i], l2[i]))
-        return "interval " + std::to_string(i) + " of edge " + std::to_string(e);
-  }
-  return "";
-}
-
 SolveOptions withThreads(SolveOptions o, unsigned threads) {
   o.threads = threads;
   return o;
@@ -113,7 +66,7 @@ TEST(SolverThreads, TwoThreadsGiveWhatOneGivesToTheBit) {
         GeodesicSolver one(mesh), two(mesh);
         one.solve(sources, withThreads(o, 1));
         two.solve(sources, withThreads(o, 2));
-        EXPECT_EQ(firstDifference(one, two, !o.vertexDistancesOnly), "")
+        EXPECT_EQ(verify::firstDifference(one, two, !o.vertexDistancesOnly), "")
             << m.name << ", " << sources.size() << " source(s), " << what;
         beside += two.stats().batchesBesideTheFront;
       }
@@ -134,7 +87,7 @@ TEST(SolverThreads, ASolverSolvesAgainWithEitherThreadCount) {
       reused.solve({&s, 1}, withThreads({}, threads));
       GeodesicSolver fresh(mesh);
       fresh.solve({&s, 1});
-      EXPECT_EQ(firstDifference(fresh, reused, true), "") << threads << " threads";
+      EXPECT_EQ(verify::firstDifference(fresh, reused, true), "") << threads << " threads";
     }
   }
 }
@@ -210,7 +163,7 @@ TEST(SolverThreads, AWindowReachingAReleasedEdgeStartsTheSolveAgainWithTwoThread
   one.solve({&source, 1}, withThreads(o, 1));
   two.solve({&source, 1}, withThreads(o, 2));
   EXPECT_TRUE(two.stats().releaseUndone);
-  EXPECT_EQ(firstDifference(one, two, true), "");
+  EXPECT_EQ(verify::firstDifference(one, two, true), "");
 }
 
 }  // namespace

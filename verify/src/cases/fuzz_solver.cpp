@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <functional>
 #include <iomanip>
 #include <sstream>
@@ -21,6 +20,7 @@
 #include "geodex/verify/invariant_checker.h"
 #include "geodex/verify/oracles.h"
 #include "geodex/verify/repro.h"  // FuzzCase, which the seeds' expectations take
+#include "geodex/verify/same_solve.h"
 #include "mesh_case.h"
 #include "svg.h"
 
@@ -442,41 +442,8 @@ bool checkTwoThreads(const SolvedCase& s, Verdict& v) {
   } catch (const std::exception& e) {
     return fail(v, "two-threads", std::string("the solve threw: ") + e.what() + s.where()), false;
   }
-  const auto same = [](double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; };
-  const auto one = s.solver.vertexDistancesInMeshUnits();
-  const auto got = two.vertexDistancesInMeshUnits();
-  for (Index x = 0; x < one.size(); ++x) {
-    if (!same(got[x], one[x]))
-      return fail(v, "two-threads",
-                  "vertex " + std::to_string(x) + " at " + fmt(one[x]) + " gets " + fmt(got[x]) +
-                      " with two threads" + s.where()),
-             false;
-  }
-  const auto listsOne = s.solver.edgeIntervals();
-  const auto listsTwo = two.edgeIntervals();
-  for (Index e = 0; e < listsOne.size(); ++e) {
-    const auto a = listsOne[e].intervals(), b = listsTwo[e].intervals();
-    bool equal = a.size() == b.size();
-    for (std::size_t i = 0; equal && i < a.size(); ++i) {
-      equal = same(a[i].b0, b[i].b0) && same(a[i].b1, b[i].b1) &&
-              same(a[i].source.x(), b[i].source.x()) && same(a[i].source.y(), b[i].source.y()) &&
-              same(a[i].sigma, b[i].sigma) && a[i].origin == b[i].origin &&
-              a[i].side == b[i].side && a[i].flags == b[i].flags;
-    }
-    if (!equal)
-      return fail(v, "two-threads",
-                  "edge " + std::to_string(e) + " holds " + std::to_string(b.size()) +
-                      " intervals with two threads, other than the " + std::to_string(a.size()) +
-                      " of one" + s.where()),
-             false;
-  }
-  const SolveStats &a = s.solver.stats(), &b = two.stats();
-  if (a.intervalsCreated != b.intervalsCreated || a.intervalsPropagated != b.intervalsPropagated ||
-      a.batchesBesideTheFront != b.batchesBesideTheFront ||
-      s.solver.counters().cases != two.counters().cases ||
-      s.solver.counters().degenerateCases != two.counters().degenerateCases ||
-      s.solver.counters().count != two.counters().count)
-    return fail(v, "two-threads", "the counts differ with two threads" + s.where()), false;
+  if (const std::string where = firstDifference(s.solver, two, /*lists=*/true); !where.empty())
+    return fail(v, "two-threads", "the " + where + " differs with two threads" + s.where()), false;
   return true;
 }
 
