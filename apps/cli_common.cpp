@@ -4,15 +4,31 @@
 #include <cmath>
 #include <cstring>
 #include <iostream>
+#include <thread>
 
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <CLI/CLI.hpp>
+
 #include "geodex/error.h"
 #include "geodex/mesh_io.h"
 
 namespace geodex::cli {
+
+unsigned defaultThreads() { return std::thread::hardware_concurrency() >= 2 ? 2 : 1; }
+
+void checkThreads(unsigned threads) {
+  if (threads < 1) throw InputError("usage", "--threads must be 1 or more, not 0");
+}
+
+void addThreadsOption(CLI::App* sub, unsigned& threads) {
+  sub->add_option("--threads", threads,
+                  "Threads for the wavefront, 1 or 2 (more count as 2; default 2 on a machine "
+                  "with two cores or more): the results are the same to the bit")
+      ->type_name("N");
+}
 
 Mesh loadMeshWithWarnings(const std::string& path, std::size_t maxWarnings) {
   std::vector<MeshIssue> warnings;

@@ -1,6 +1,7 @@
 #pragma once
 // Pieces the `geodex` subcommands share: exit codes, mesh loading with warnings on stderr,
-// parsing SPEC lists, number formatting, and output files that appear whole or not at all.
+// parsing SPEC lists, the --threads option, number formatting, and output files that appear whole
+// or not at all.
 
 #include <cstdio>
 #include <string>
@@ -8,6 +9,10 @@
 
 #include "geodex/mesh.h"
 #include "geodex/surface_point.h"
+
+namespace CLI {
+class App;
+}
 
 namespace geodex::cli {
 
@@ -31,6 +36,13 @@ std::vector<SurfacePoint> parseSurfacePoints(const std::vector<std::string>& spe
 /// and with the option it came from. Throws InputError.
 void checkPointsOnMesh(const Mesh& mesh, const std::vector<SurfacePoint>& points,
                        const std::string& optionName);
+
+/// `--threads N` on a solving subcommand, into `threads`; its default, defaultThreads(): 2 where
+/// the machine runs two threads at once, else 1 (the results are the same to the bit).
+/// checkThreads refuses 0 (InputError "usage").
+void addThreadsOption(CLI::App* sub, unsigned& threads);
+unsigned defaultThreads();
+void checkThreads(unsigned threads);
 
 /// `%.17g`, or "inf" for +inf (unreachable). Round-trips through strtod.
 std::string formatDistance(double d);

@@ -15,12 +15,6 @@ struct Command {
   std::function<int()> run;  ///< runs it; returns an ExitCode, throws on errors
 };
 
-/// `--threads N` on a solving subcommand, into `threads` (default: 2 where the machine runs two
-/// threads at once, else 1; the results are the same to the bit). checkThreads refuses 0.
-void addThreadsOption(CLI::App* sub, unsigned& threads);
-unsigned defaultThreads();
-void checkThreads(unsigned threads);
-
 Command addDistanceCommand(CLI::App& app);
 Command addPathCommand(CLI::App& app);
 Command addInfoCommand(CLI::App& app);

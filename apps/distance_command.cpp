@@ -11,7 +11,6 @@
 #include <memory>
 #include <span>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "cli_common.h"
@@ -148,20 +147,6 @@ int runDistance(const DistanceOptions& o) {
 }
 
 }  // namespace
-
-// Two where the machine runs two threads at once: the results are the same to the bit with one.
-unsigned defaultThreads() { return std::thread::hardware_concurrency() >= 2 ? 2 : 1; }
-
-void checkThreads(unsigned threads) {
-  if (threads < 1) throw InputError("usage", "--threads must be 1 or more, not 0");
-}
-
-void addThreadsOption(CLI::App* sub, unsigned& threads) {
-  sub->add_option("--threads", threads,
-                  "Threads for the wavefront, 1 or 2 (more count as 2; default 2 on a machine "
-                  "with two cores or more): the results are the same to the bit")
-      ->type_name("N");
-}
 
 Command addDistanceCommand(CLI::App& app) {
   auto o = std::make_shared<DistanceOptions>();
