@@ -181,8 +181,8 @@ bool GeodesicSolver::runWavefront(const SolveOptions& inMeshUnits,
       continue;
     }
     // Stale: a smaller key was queued for the side since, or a round has run its batch (most of
-    // the edge-side entries: 247,278 of 272,909 on armadillo from v:0 with batches of one median
-    // edge). prepareBatch would find the same.
+    // them: 252,022 of the 284,314 entries popped on armadillo from v:0). prepareBatch would find
+    // the same.
     if (top.key != pendingKey(top.edge, top.which)) continue;
     runRound(top, inMeshUnits.stopDistance);
     if (releaseBroken_) return false;
